@@ -1,0 +1,57 @@
+#pragma once
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <set>
+#include <string>
+
+namespace whiskermap::core
+{
+/** Strict, typed reader of one section of an MRPT-style .ini file.
+ *
+ * Every getter checks the value parses completely (a trailing `; comment` is allowed) and is
+ * finite; range-checked getters also check bounds. `finish()` then rejects any key in the
+ * section that no getter asked for, so a misspelt key is an error, never silently ignored.
+ * All errors are core::Error with a one-line message "FILE: [SECTION] KEY: problem". */
+class IniSection
+{
+   public:
+	IniSection(const mrpt::config::CConfigFileBase& cfg, std::string section, std::string fileLabel);
+
+	bool has(const std::string& key) const;
+	/** Required number in [lo, hi]. */
+	double number(const std::string& key, double lo, double hi);
+	/** Optional number in [lo, hi], `def` when absent. */
+	double number(const std::string& key, double def, double lo, double hi);
+	/** Required integer in [lo, hi]. */
+	long integer(const std::string& key, long lo, long hi);
+	/** Optional integer in [lo, hi], `def` when absent. */
+	long integer(const std::string& key, long def, long lo, long hi);
+	/** Optional boolean (true/false/1/0/yes/no). */
+	bool boolean(const std::string& key, bool def);
+	/** Optional string, `def` when absent. */
+	std::string text(const std::string& key, const std::string& def);
+
+	/** Throws if the section holds keys that were never read. */
+	void finish() const;
+
+	/** Throws an error naming this file and section (and key, if not empty). */
+	[[noreturn]] void fail(const std::string& key, const std::string& problem) const;
+
+	const std::string& section() const { return m_section; }
+	const std::string& fileLabel() const { return m_file; }
+
+   private:
+	std::string raw(const std::string& key);  // value without comment; throws if missing
+	double parseNumber(const std::string& key, const std::string& s) const;
+
+	const mrpt::config::CConfigFileBase& m_cfg;
+	std::string m_section, m_file;
+	std::set<std::string> m_read;
+};
+
+/** Throws if `cfg` has a section not in `allowed` (exact names), or, when `prefix` is not
+ *  empty, not starting with it. Used to reject unknown sections in strict files. */
+void rejectUnknownSections(
+	const mrpt::config::CConfigFileBase& cfg, const std::set<std::string>& allowed,
+	const std::string& prefix, const std::string& fileLabel);
+}  // namespace whiskermap::core

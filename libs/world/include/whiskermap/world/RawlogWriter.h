@@ -1,0 +1,49 @@
+#pragma once
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/poses/CPose2D.h>
+#include <whiskermap/obs/CObservationWhiskerContacts.h>
+
+#include <fstream>
+#include <optional>
+#include <string>
+
+namespace whiskermap::world
+{
+/** Writes whisker sweeps with their robot poses as an MRPT rawlog, plus MRPT-simulator style
+ *  ground truth `<name>_ground_truth_robot_path.txt` beside it.
+ *
+ *  Formats: Observations writes a CObservationOdometry (the absolute pose) before each sweep;
+ *  ActionSensoryFrame writes, per sweep, a CActionCollection holding a CActionRobotMovement2D
+ *  (the pose increment from the previous pose; from the origin for the first) and a
+ *  CSensoryFrame holding the sweep, as stock rbpf-slam needs.
+ *
+ *  Files are written under temporary names and renamed by close(): a run that fails midway
+ *  leaves no half-written rawlog behind. */
+class RawlogWriter
+{
+   public:
+	enum class Format
+	{
+		Observations,
+		ActionSensoryFrame
+	};
+
+	RawlogWriter(const std::string& rawlogPath, Format format);
+	~RawlogWriter();  ///< removes the temporary files if close() was not reached
+
+	void write(const mrpt::poses::CPose2D& pose, const obs::CObservationWhiskerContacts& sweep);
+	/** Flushes and renames both files into place. */
+	void close();
+
+	/** "<dir>/<stem>_ground_truth_robot_path.txt" for a rawlog path. */
+	static std::string groundTruthPathFile(const std::string& rawlogPath);
+
+   private:
+	std::string m_path, m_gtPath;
+	Format m_format;
+	mrpt::io::CFileGZOutputStream m_out;
+	std::ofstream m_gt;
+	std::optional<mrpt::poses::CPose2D> m_last;
+	bool m_closed = false;
+};
+}  // namespace whiskermap::world

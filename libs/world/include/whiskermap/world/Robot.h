@@ -1,0 +1,20 @@
+#pragma once
+#include <mrpt/poses/CPose3D.h>
+#include <whiskermap/obs/TWhisker.h>
+
+#include <string>
+#include <vector>
+
+namespace whiskermap::world
+{
+/** A whiskered robot's geometry: its round body and its whisker array (mountings only).
+ *  Read from a robot .ini (config/robots/, format in doc/formats.md). */
+struct Robot
+{
+	double radius = 0.1;  ///< body radius, metres
+	mrpt::poses::CPose3D sensorPose;  ///< whisker-array frame on the robot (x, y, yaw)
+	std::vector<obs::TWhisker> whiskers;  ///< mountings; reading fields unused
+
+	static Robot load(const std::string& path);
+};
+}  // namespace whiskermap::world

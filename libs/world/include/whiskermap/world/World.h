@@ -1,0 +1,28 @@
+#pragma once
+#include <whiskermap/world/Obstacle.h>
+#include <whiskermap/world/Table.h>
+
+#include <string>
+#include <vector>
+
+namespace whiskermap::world
+{
+/** The arena (a rectangle walled on its four edges) and its tables: the ground truth a
+ *  simulator senses and an evaluation compares against. See doc/formats.md for the .ini. */
+struct World
+{
+	double x_min = 0, x_max = 0, y_min = 0, y_max = 0;  ///< walls stand on these edges, metres
+	double wall_texture = 0.3;  ///< texture of the walls (optional key in [arena])
+	std::vector<Table> tables;
+
+	/** Reads and validates a world .ini. Unknown sections or keys, missing keys, bad values,
+	 *  tables outside the arena or overlapping are core::Error naming file, section and key. */
+	static World load(const std::string& path);
+	/** Writes the world in the same .ini format (it loads back to the same values). */
+	void save(const std::string& path) const;
+
+	/** All legs (tagged with their table and leg index) and four wall slabs of the given
+	 *  thickness just outside the arena. */
+	std::vector<Obstacle> obstacles(double wallThickness = 1.0) const;
+};
+}  // namespace whiskermap::world

@@ -1,0 +1,50 @@
+#include <mrpt/config/CConfigFile.h>
+#include <whiskermap/core/Angles.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/core/IniSection.h>
+#include <whiskermap/world/Robot.h>
+
+#include <filesystem>
+
+namespace whiskermap::world
+{
+Robot Robot::load(const std::string& path)
+{
+	using core::deg2rad;
+	if (!std::filesystem::is_regular_file(path)) throw core::Error(path + ": no such robot file");
+	mrpt::config::CConfigFile cfg(path);
+	core::rejectUnknownSections(cfg, {"robot"}, "whisker_", path);
+	core::IniSection sec(cfg, "robot", path);
+	Robot r;
+	r.radius = sec.number("radius", 0.01, 10);
+	const double sx = sec.number("sensor_x", 0.0, -10, 10);
+	const double sy = sec.number("sensor_y", 0.0, -10, 10);
+	const double syaw = deg2rad(sec.number("sensor_yaw_deg", 0.0, -360, 360));
+	r.sensorPose = mrpt::poses::CPose3D(sx, sy, 0, syaw, 0, 0);
+	const long n = sec.integer("whisker_count", 1, 1024);
+	sec.finish();
+	for (long i = 0; i < n; i++)
+	{
+		core::IniSection w(cfg, "whisker_" + std::to_string(i), path);
+		if (!cfg.sectionExists(w.section())) w.fail("", "missing section (whisker_count=" + std::to_string(n) + ")");
+		obs::TWhisker m;
+		m.mount_x = w.number("mount_x", -10, 10);
+		m.mount_y = w.number("mount_y", -10, 10);
+		m.sweep_start = deg2rad(w.number("sweep_start_deg", -360, 360));
+		m.sweep_end = deg2rad(w.number("sweep_end_deg", -360, 360));
+		m.length = w.number("length", 1e-3, 10);
+		w.finish();
+		if (std::abs(m.sweep_end - m.sweep_start) >= 2 * M_PI)
+			w.fail("sweep_end_deg", "a whisk must sweep less than a full turn");
+		m.angle = m.sweep_end;
+		r.whiskers.push_back(m);
+	}
+	std::vector<std::string> sections;
+	cfg.getAllSections(sections);
+	for (const auto& s : sections)
+		if (s.rfind("whisker_", 0) == 0 && s.substr(8).find_first_not_of("0123456789") == std::string::npos &&
+			std::stol("0" + s.substr(8)) >= n)
+			throw core::Error(path + ": [" + s + "]: beyond whisker_count=" + std::to_string(n));
+	return r;
+}
+}  // namespace whiskermap::world

@@ -1,0 +1,112 @@
+#include <mrpt/config/CConfigFile.h>
+#include <whiskermap/core/Angles.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/core/IniSection.h>
+#include <whiskermap/world/World.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+namespace whiskermap::world
+{
+using core::Error;
+
+World World::load(const std::string& path)
+{
+	if (!std::filesystem::is_regular_file(path)) throw Error(path + ": no such world file");
+	mrpt::config::CConfigFile cfg(path);
+	core::rejectUnknownSections(cfg, {"arena"}, "table_", path);
+
+	World w;
+	core::IniSection arena(cfg, "arena", path);
+	if (!cfg.sectionExists("arena")) arena.fail("", "missing section");
+	const double big = 1e4;
+	w.x_min = arena.number("x_min", -big, big);
+	w.x_max = arena.number("x_max", -big, big);
+	w.y_min = arena.number("y_min", -big, big);
+	w.y_max = arena.number("y_max", -big, big);
+	w.wall_texture = arena.number("wall_texture", w.wall_texture, 0, 1);
+	arena.finish();
+	if (w.x_max <= w.x_min) arena.fail("x_max", "must be greater than x_min");
+	if (w.y_max <= w.y_min) arena.fail("y_max", "must be greater than y_min");
+
+	// [table_N] sections, in order of N.
+	std::vector<std::string> sections;
+	cfg.getAllSections(sections);
+	std::map<long, std::string> byIndex;
+	for (const auto& s : sections)
+	{
+		if (s.rfind("table_", 0) != 0) continue;
+		const std::string n = s.substr(6);
+		if (n.empty() || n.find_first_not_of("0123456789") != std::string::npos)
+			throw Error(path + ": [" + s + "]: table sections must be named table_N, N = 0, 1, ...");
+		byIndex[std::stol(n)] = s;
+	}
+	std::vector<std::string> names;
+	for (const auto& [index, name] : byIndex)
+	{
+		core::IniSection sec(cfg, name, path);
+		Table t;
+		t.x = sec.number("x", -big, big);
+		t.y = sec.number("y", -big, big);
+		t.yaw = core::deg2rad(sec.number("yaw_deg", -360, 360));
+		t.length = sec.number("length", 1e-3, 100);
+		t.width = sec.number("width", 1e-3, 100);
+		t.leg_width = sec.number("leg_width", 1e-3, 10);
+		t.texture = sec.number("texture", 0, 1);
+		sec.finish();
+		if (t.texture <= 0 || t.texture >= 1) sec.fail("texture", "must be strictly inside (0, 1)");
+		if (t.leg_width >= std::min(t.length, t.width))
+			sec.fail("leg_width", "legs wider than the leg spacing would overlap");
+		for (const auto& c : t.footprint().corners)
+			if (c.x() < w.x_min || c.x() > w.x_max || c.y() < w.y_min || c.y() > w.y_max)
+				sec.fail("", "table lies (partly) outside the arena");
+		for (size_t j = 0; j < w.tables.size(); j++)
+			if (t.footprint().intersects(w.tables[j].footprint()))
+				sec.fail("", "table overlaps [" + names[j] + "]");
+		w.tables.push_back(t);
+		names.push_back(name);
+	}
+	return w;
+}
+
+void World::save(const std::string& path) const
+{
+	std::ofstream f(path);
+	if (!f) throw Error(path + ": cannot write file");
+	char buf[512];
+	std::snprintf(
+		buf, sizeof(buf),
+		"; whiskermap world (format: doc/formats.md)\n[arena]\nx_min=%.10g\nx_max=%.10g\n"
+		"y_min=%.10g\ny_max=%.10g\nwall_texture=%.10g\n",
+		x_min, x_max, y_min, y_max, wall_texture);
+	f << buf;
+	for (size_t i = 0; i < tables.size(); i++)
+	{
+		const auto& t = tables[i];
+		std::snprintf(
+			buf, sizeof(buf),
+			"\n[table_%zu]\nx=%.10g\ny=%.10g\nyaw_deg=%.10g\nlength=%.10g\nwidth=%.10g\n"
+			"leg_width=%.10g\ntexture=%.10g\n",
+			i, t.x, t.y, core::rad2deg(t.yaw), t.length, t.width, t.leg_width, t.texture);
+		f << buf;
+	}
+	if (!f) throw Error(path + ": write failed");
+}
+
+std::vector<Obstacle> World::obstacles(double wallThickness) const
+{
+	std::vector<Obstacle> obs;
+	for (size_t i = 0; i < tables.size(); i++)
+		for (int k = 0; k < 4; k++) obs.push_back(tables[i].leg(k, static_cast<int>(i)));
+	const double T = wallThickness, cx = (x_min + x_max) / 2, cy = (y_min + y_max) / 2;
+	const double hx = (x_max - x_min) / 2 + T, hy = (y_max - y_min) / 2 + T;
+	obs.push_back(Obstacle::rectangle({x_min - T / 2, cy}, 0, T / 2, hy, wall_texture));
+	obs.push_back(Obstacle::rectangle({x_max + T / 2, cy}, 0, T / 2, hy, wall_texture));
+	obs.push_back(Obstacle::rectangle({cx, y_min - T / 2}, 0, hx, T / 2, wall_texture));
+	obs.push_back(Obstacle::rectangle({cx, y_max + T / 2}, 0, hx, T / 2, wall_texture));
+	return obs;
+}
+}  // namespace whiskermap::world

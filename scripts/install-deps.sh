@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs whiskermap's build, test and tool dependencies from Debian's packages.
+# Idempotent: packages already installed are skipped, and apt is not touched at all
+# when everything is present. Usage: scripts/install-deps.sh [--tools]
+#   --tools  also install the stock MRPT / OctoMap tools used by the tests
+#            (rawlog-edit, pf-localization, convert_octree).
+set -euo pipefail
+
+build_pkgs=(cmake g++ make pkg-config libmrpt-maps-dev libmrpt-slam-dev
+            libeigen3-dev liboctomap-dev libgtest-dev libbenchmark-dev libcli11-dev)
+tool_pkgs=(mrpt-apps octomap-tools)
+
+want=("${build_pkgs[@]}")
+[[ "${1:-}" == "--tools" ]] && want+=("${tool_pkgs[@]}")
+
+missing=()
+for p in "${want[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "install-deps: all ${#want[@]} packages already installed"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+[[ $(id -u) -ne 0 ]] && SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"
