@@ -11,19 +11,33 @@
 #include <array>
 #include <filesystem>
 #include <optional>
+#include <sstream>
 
 using namespace whiskermap::obs;
 using whiskermap::core::Error;
 
 namespace
 {
-/** First line of an exception message: MRPT's carry call stacks on the lines after. */
-std::string firstLine(const std::string& s)
+/** The one line that matters in an exception message. MRPT's span many lines and nest
+ *  ("==== MRPT exception ====", "Message: ...", "Original exception:" + the cause, a call
+ *  stack): keep the innermost cause. A stream that ran dry mid-object is a truncation. */
+std::string reason(const std::string& what)
 {
-	std::string line = s.substr(0, s.find('\n'));
-	// MRPT prefixes "file:line: [function] "; keep the part after the last "] ".
-	const auto p = line.rfind("] ");
-	return p == std::string::npos ? line : line.substr(p + 2);
+	std::istringstream in(what);
+	std::string line, best, prev;
+	const std::string msgTag = "Message:", banner = "==== MRPT exception ====";
+	while (std::getline(in, line))
+	{
+		if (line.rfind(msgTag, 0) == 0)
+			best = line.substr(line.find_first_not_of(' ', msgTag.size()));
+		else if (prev == "Original exception:" && line != banner)
+			best = line;
+		prev = line;
+	}
+	if (best.empty()) best = what.substr(0, what.find('\n'));
+	if (best.find("Cannot read requested number of bytes") != std::string::npos)
+		return "truncated file (an object is cut off)";
+	return best;
 }
 
 /** Decompresses a whole gzip file once to catch truncation or corruption, which the
@@ -47,8 +61,9 @@ void checkGzipIntegrity(const std::string& path)
 	{
 	}
 	int err = Z_OK;
-	const std::string msg = gzerror(g, &err);
+	std::string msg = gzerror(g, &err);
 	gzclose(g);
+	if (msg.rfind(path + ": ", 0) == 0) msg = msg.substr(path.size() + 2);
 	if (got < 0 || err != Z_OK)
 		throw Error(path + ": truncated or corrupt gzip data (" + msg + ")");
 }
@@ -93,7 +108,7 @@ RawlogReader::Contents RawlogReader::read(const std::string& path)
 		{
 			throw Error(
 				path + ": corrupt rawlog at object #" + std::to_string(c.objects) + ": " +
-				firstLine(e.what()));
+				reason(e.what()));
 		}
 		if (auto acts = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
 		{
