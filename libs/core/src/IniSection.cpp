@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <vector>
 
 namespace whiskermap::core
@@ -113,6 +115,24 @@ void IniSection::finish() const
 	m_cfg.getAllKeys(m_section, keys);
 	for (const auto& k : keys)
 		if (!m_read.count(k)) fail(k, "unknown key");
+}
+
+std::unique_ptr<mrpt::config::CConfigFile> openIniFile(
+	const std::string& path, const std::string& kind)
+{
+	if (!std::filesystem::is_regular_file(path)) throw Error(path + ": no such " + kind);
+	std::ifstream f(path);
+	std::string line;
+	for (int n = 1; std::getline(f, line); n++)
+	{
+		const std::string t = stripComment(line);
+		const bool ok = t.empty() ||
+			(t.front() == '[' && t.back() == ']' && t.size() > 2 &&
+			 t.find_first_of("[]", 1) == t.size() - 1) ||
+			(t.find('=') != std::string::npos && t.find('=') > 0 && t.front() != '[');
+		if (!ok) throw Error(path + ": line " + std::to_string(n) + ": malformed line '" + t + "'");
+	}
+	return std::make_unique<mrpt::config::CConfigFile>(path);
 }
 
 void rejectUnknownSections(

@@ -1,4 +1,3 @@
-#include <mrpt/config/CConfigFile.h>
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/core/IniSection.h>
@@ -9,7 +8,8 @@ namespace whiskermap::world
 obs::TSensorNoise NoisePreset::load(const std::string& nameOrPath)
 {
 	const std::string path = core::ConfigPaths::resolve(nameOrPath, "noise");
-	mrpt::config::CConfigFile cfg(path);
+	const auto file = core::openIniFile(path, "noise file");
+	const auto& cfg = *file;
 	core::rejectUnknownSections(cfg, {"noise"}, "", path);
 	core::IniSection sec(cfg, "noise", path);
 	obs::TSensorNoise n;

@@ -1,18 +1,16 @@
-#include <mrpt/config/CConfigFile.h>
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/core/IniSection.h>
 #include <whiskermap/world/Robot.h>
 
-#include <filesystem>
 
 namespace whiskermap::world
 {
 Robot Robot::load(const std::string& path)
 {
 	using core::deg2rad;
-	if (!std::filesystem::is_regular_file(path)) throw core::Error(path + ": no such robot file");
-	mrpt::config::CConfigFile cfg(path);
+	const auto file = core::openIniFile(path, "robot file");
+	const auto& cfg = *file;
 	core::rejectUnknownSections(cfg, {"robot"}, "whisker_", path);
 	core::IniSection sec(cfg, "robot", path);
 	Robot r;

@@ -1,11 +1,9 @@
-#include <mrpt/config/CConfigFile.h>
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/core/IniSection.h>
 #include <whiskermap/world/World.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <map>
 
@@ -15,8 +13,8 @@ using core::Error;
 
 World World::load(const std::string& path)
 {
-	if (!std::filesystem::is_regular_file(path)) throw Error(path + ": no such world file");
-	mrpt::config::CConfigFile cfg(path);
+	const auto file = core::openIniFile(path, "world file");
+	const auto& cfg = *file;
 	core::rejectUnknownSections(cfg, {"arena"}, "table_", path);
 
 	World w;

@@ -1,5 +1,8 @@
 #pragma once
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileBase.h>
+
+#include <memory>
 
 #include <set>
 #include <string>
@@ -48,6 +51,11 @@ class IniSection
 	std::string m_section, m_file;
 	std::set<std::string> m_read;
 };
+
+/** Opens an .ini file after checking it exists and every line is blank, a comment
+ *  (; or #), a `[section]` or a `key = value`. `kind` names the file in errors
+ *  ("world file" -> "x.ini: no such world file", "x.ini: line 3: malformed line '...'"). */
+std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path, const std::string& kind);
 
 /** Throws if `cfg` has a section not in `allowed` (exact names), or, when `prefix` is not
  *  empty, not starting with it. Used to reject unknown sections in strict files. */
