@@ -1,3 +1,3 @@
-#include <whiskermap/world/WhiskerSimApp.h>
+#include <whiskermap/cli/WhiskerSimApp.h>
 
-int main(int argc, char** argv) { return whiskermap::world::WhiskerSimApp::main(argc, argv); }
+int main(int argc, char** argv) { return whiskermap::cli::WhiskerSimApp::main(argc, argv); }

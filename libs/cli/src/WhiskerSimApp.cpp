@@ -1,24 +1,26 @@
 #include <CLI/CLI.hpp>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/core/Error.h>
+#include <whiskermap/render/TopDownImage.h>
 #include <whiskermap/world/NoisePreset.h>
 #include <whiskermap/world/RawlogWriter.h>
 #include <whiskermap/world/Trajectory.h>
-#include <whiskermap/world/WhiskerSimApp.h>
+#include <whiskermap/cli/WhiskerSimApp.h>
 #include <whiskermap/world/WhiskerSimulator.h>
 
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 
-namespace whiskermap::world
+namespace whiskermap::cli
 {
+using namespace whiskermap::world;
 namespace
 {
 struct Options
 {
 	std::string world, trajectory = "paper-grid", path, robot = "scratchbot", noise = "default";
-	std::string format = "obs", out;
+	std::string format = "obs", out, png;
 	int grid = 10;
 	uint64_t seed = 1;
 	bool quiet = false;
@@ -57,6 +59,7 @@ int run(const Options& o)
 	RawlogWriter out(
 		o.out, o.format == "obs" ? RawlogWriter::Format::Observations
 								 : RawlogWriter::Format::ActionSensoryFrame);
+	render::TopDownImage picture(w.x_min, w.x_max, w.y_min, w.y_max);
 	ContactStatistic stat;
 	size_t written = 0, skipped = 0, contacts = 0, wallContacts = 0;
 	std::vector<WhiskerSimulator::Truth> truth;
@@ -80,12 +83,24 @@ int run(const Options& o)
 			wallContacts += t.wall;
 		}
 		contacts += sweep->contactCount();
+		if (!o.png.empty())
+		{
+			picture.robot(p, {120, 120, 120});
+			for (const auto& s : sweep->toShapelets(p)) picture.shapelet(s, {220, 30, 30});
+		}
 		stat.add(onTables);
 	}
 	if (written == 0) throw core::Error(o.out + ": every pose was blocked, nothing to write");
 	out.close();
 	const std::filesystem::path op(o.out);
 	w.save((op.parent_path() / (op.stem().string() + "_ground_truth_world.ini")).string());
+	if (!o.png.empty())
+	{
+		picture.arena(w, {0, 0, 0});
+		for (const auto& t : w.tables) picture.table(t, {0, 0, 200}, 2);
+		picture.caption(std::filesystem::path(o.out).filename().string() + ": tables (blue), robot poses (grey), contacts + normals (red)");
+		picture.save(o.png);
+	}
 
 	if (!o.quiet)
 	{
@@ -133,6 +148,7 @@ int WhiskerSimApp::main(int argc, char** argv)
 		->check(CLI::IsMember({"obs", "action-sf"}))
 		->capture_default_str();
 	app.add_option("-o,--out", o.out, "Output rawlog path")->required();
+	app.add_option("--png", o.png, "Also draw the world, poses and contacts into this PNG");
 	app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
 	try
 	{
@@ -149,4 +165,4 @@ int WhiskerSimApp::main(int argc, char** argv)
 		return 1;
 	}
 }
-}  // namespace whiskermap::world
+}  // namespace whiskermap::cli

@@ -1,0 +1,49 @@
+#pragma once
+#include <mrpt/img/CImage.h>
+#include <mrpt/poses/CPose2D.h>
+#include <whiskermap/obs/Shapelet.h>
+#include <whiskermap/world/Table.h>
+#include <whiskermap/world/World.h>
+
+#include <Eigen/Core>
+#include <string>
+
+namespace whiskermap::render
+{
+/** A top-down PNG picture of (part of) the plane, x to the right and y up, drawn with
+ *  MRPT's CImage (no display needed). Used for montages (the paper's figs. 5-7), maps and
+ *  the blackboard snapshots (figs. 1-2). */
+class TopDownImage
+{
+   public:
+	/** The rectangle [x0, x1] x [y0, y1] (metres) at `pxPerMetre`, with a margin. */
+	TopDownImage(double x0, double x1, double y0, double y1, double pxPerMetre = 150);
+
+	/** Walls of a world's arena. */
+	void arena(const world::World& w, mrpt::img::TColor c);
+	/** A table: the rectangle through its leg centres and its four leg squares. */
+	void table(const world::Table& t, mrpt::img::TColor c, unsigned width = 1);
+	/** A convex quadrilateral's outline. */
+	void quad(const std::array<Eigen::Vector2d, 4>& corners, mrpt::img::TColor c, unsigned width = 1);
+	/** A robot pose: a small circle and a heading tick. */
+	void robot(const mrpt::poses::CPose2D& p, mrpt::img::TColor c);
+	/** A shapelet: a dot and a short tick along its surface normal. */
+	void shapelet(const obs::Shapelet& s, mrpt::img::TColor c);
+	/** A caption line at the top left (call repeatedly for more lines). */
+	void caption(const std::string& text, mrpt::img::TColor c = mrpt::img::TColor(0, 0, 0));
+
+	/** Writes the PNG (via a temporary file, renamed when complete). Throws core::Error. */
+	void save(const std::string& path) const;
+
+	const mrpt::img::CImage& image() const { return m_img; }
+
+   private:
+	int px(double x) const;
+	int py(double y) const;
+	void segment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, mrpt::img::TColor c, unsigned width);
+
+	double m_x0, m_y1, m_scale;
+	int m_margin = 20, m_captionY = 4;
+	mrpt::img::CImage m_img;
+};
+}  // namespace whiskermap::render

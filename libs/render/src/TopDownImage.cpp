@@ -1,0 +1,71 @@
+#include <whiskermap/core/Error.h>
+#include <whiskermap/render/TopDownImage.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace whiskermap::render
+{
+TopDownImage::TopDownImage(double x0, double x1, double y0, double y1, double pxPerMetre)
+	: m_x0(x0),
+	  m_y1(y1),
+	  m_scale(pxPerMetre),
+	  m_img(
+		  static_cast<unsigned>(std::ceil((x1 - x0) * pxPerMetre)) + 40,
+		  static_cast<unsigned>(std::ceil((y1 - y0) * pxPerMetre)) + 40, mrpt::img::CH_RGB)
+{
+	m_img.filledRectangle(0, 0, m_img.getWidth() - 1, m_img.getHeight() - 1, {255, 255, 255});
+}
+
+int TopDownImage::px(double x) const { return m_margin + static_cast<int>(std::lround((x - m_x0) * m_scale)); }
+int TopDownImage::py(double y) const { return m_margin + static_cast<int>(std::lround((m_y1 - y) * m_scale)); }
+
+void TopDownImage::segment(
+	const Eigen::Vector2d& a, const Eigen::Vector2d& b, mrpt::img::TColor c, unsigned width)
+{
+	m_img.line(px(a.x()), py(a.y()), px(b.x()), py(b.y()), c, width);
+}
+
+void TopDownImage::quad(const std::array<Eigen::Vector2d, 4>& q, mrpt::img::TColor c, unsigned width)
+{
+	for (int k = 0; k < 4; k++) segment(q[k], q[(k + 1) % 4], c, width);
+}
+
+void TopDownImage::arena(const world::World& w, mrpt::img::TColor c)
+{
+	quad({Eigen::Vector2d(w.x_min, w.y_min), Eigen::Vector2d(w.x_max, w.y_min),
+		  Eigen::Vector2d(w.x_max, w.y_max), Eigen::Vector2d(w.x_min, w.y_max)},
+		 c, 3);
+}
+
+void TopDownImage::table(const world::Table& t, mrpt::img::TColor c, unsigned width)
+{
+	quad({t.legCentre(0), t.legCentre(1), t.legCentre(2), t.legCentre(3)}, c, width);
+	for (int k = 0; k < 4; k++) quad(t.leg(k, 0).corners, c, width);
+}
+
+void TopDownImage::robot(const mrpt::poses::CPose2D& p, mrpt::img::TColor c)
+{
+	m_img.drawCircle(px(p.x()), py(p.y()), 3, c);
+	segment({p.x(), p.y()}, {p.x() + 0.08 * std::cos(p.phi()), p.y() + 0.08 * std::sin(p.phi())}, c, 1);
+}
+
+void TopDownImage::shapelet(const obs::Shapelet& s, mrpt::img::TColor c)
+{
+	m_img.filledRectangle(px(s.x) - 1, py(s.y) - 1, px(s.x) + 1, py(s.y) + 1, c);
+	segment({s.x, s.y}, {s.x + 0.06 * std::cos(s.normal), s.y + 0.06 * std::sin(s.normal)}, c, 1);
+}
+
+void TopDownImage::caption(const std::string& text, mrpt::img::TColor c)
+{
+	m_img.textOut(m_margin, m_captionY, text, c);
+	m_captionY += 12;
+}
+
+void TopDownImage::save(const std::string& path) const
+{
+	const std::string tmp = path + ".tmp.png";
+	if (!m_img.saveToFile(tmp)) throw core::Error(path + ": cannot write image");
+	std::filesystem::rename(tmp, path);
+}
+}  // namespace whiskermap::render
