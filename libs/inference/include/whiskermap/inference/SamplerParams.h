@@ -1,0 +1,29 @@
+#pragma once
+#include <whiskermap/core/IniSection.h>
+#include <whiskermap/inference/AnnealingSchedule.h>
+
+namespace whiskermap::inference
+{
+/** Settings of the annealed blackboard sampler (Algorithm 1). Defaults and reasons:
+ *  config/model.ini [sampler], doc/sampler.md. */
+struct SamplerParams
+{
+	/** Move thresholds on u ~ U(0,1) per hypothesis: death below r1, new parent below r2,
+	 *  child below r3, else a parent proposal. 0 <= r1 <= r2 <= r3 <= 1. */
+	double r1 = 0.2, r2 = 0.4, r3 = 0.7;
+
+	AnnealingSchedule schedule = AnnealingSchedule::geometric(0.1, 10.0, 12);
+	int sweeps_per_temperature = 2;  ///< priming + hypothesis sweep + prune, per beta
+	int coldest_sweeps = 6;  ///< sweeps at the last beta; each is a MAP checkpoint
+
+	/** Priming: probability of proposing an existing leg near the shapelet (when there is
+	 *  one) rather than a new leg. */
+	double existing_leg_probability = 0.5;
+	double leg_position_noise = 0.003;  ///< std-dev of a new leg's centre, metres
+	double leg_angle_noise = 0.02;  ///< std-dev of a new leg's yaw, radians
+
+	/** Reads every key of `sec` (all required; the schedule as beta_start, beta_end,
+	 *  temperatures) and calls sec.finish(); throws core::Error. */
+	static SamplerParams fromIni(core::IniSection& sec);
+};
+}  // namespace whiskermap::inference

@@ -1,0 +1,39 @@
+#pragma once
+#include <whiskermap/model/HypothesisSet.h>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <optional>
+
+namespace whiskermap::inference
+{
+/** The move types of Algorithm 1, for counting. */
+enum class Move : uint8_t
+{
+	Priming,  ///< a leg for a shapelet without one (new, or an existing one nearby)
+	Death,  ///< remove a hypothesis
+	Reparent,  ///< replace a leg's parent table (or drop it)
+	Child,  ///< a missing leg at a table's empty corner; a nearby shapelet for a leg
+	Parent,  ///< a new table with the leg at one of its corners
+};
+constexpr size_t MOVE_COUNT = 5;
+
+/** What one time step of the sampler found. */
+struct StepResult
+{
+	/** The MAP blackboard: the best (by log posterior) seen at the coldest temperature.
+	 *  Its tables are the answer of eq. 18; legs and shapelet links come with it. */
+	model::HypothesisSet map;
+	double logPosterior = -std::numeric_limits<double>::infinity();  ///< logJoint of `map`
+
+	std::array<uint32_t, MOVE_COUNT> proposed{};  ///< indexed by Move
+	std::array<uint32_t, MOVE_COUNT> accepted{};
+
+	/** The blackboard after the requested temperature index (figs. 1-2), if asked for. */
+	std::optional<model::HypothesisSet> snapshot;
+
+	uint32_t proposedOf(Move m) const { return proposed[static_cast<size_t>(m)]; }
+	uint32_t acceptedOf(Move m) const { return accepted[static_cast<size_t>(m)]; }
+};
+}  // namespace whiskermap::inference

@@ -1,0 +1,47 @@
+#pragma once
+#include <whiskermap/model/Leg.h>
+#include <whiskermap/model/ModelParams.h>
+#include <whiskermap/model/OrientedRect.h>
+#include <whiskermap/model/Table.h>
+#include <whiskermap/obs/Shapelet.h>
+
+namespace whiskermap::model
+{
+/** The densities of the generative model (paper section 3), all as natural logarithms.
+ *  Each function is one equation; its number is in the comment. */
+
+/** log(exp(a) + exp(b)) without overflow. */
+double logSumExp(double a, double b);
+
+/** Noisy-OR of one explicit cause and the null cause, as the sum of densities (eq. 12). */
+inline double logNoisyOr(double logCause, double logNull) { return logSumExp(logCause, logNull); }
+
+/** Probability of a hypothesis cell of half-width delta in (x, y, theta): (2 delta)^3 p (eq. 19). */
+double logCell(double logDensity, const ModelParams& p);
+
+/** Flat table prior p(T) = c_T (eq. 4). */
+double logTablePrior(const ModelParams& p);
+
+/** Centre of corner i in 0..3 of a table: (+,+), (-,+), (-,-), (+,-) in the table frame. */
+void tableCorner(const Table& t, int i, const ModelParams& p, double& x, double& y);
+
+/** Footprint (length x width) of a table, and the rectangle of a leg. */
+OrientedRect tableRect(const Table& t, const ModelParams& p);
+OrientedRect legRect(const Leg& l);
+
+/** log p(L | T) = log alpha_L - Delta_TL (eqs. 5-6), and the corner achieving the min. */
+struct LegFit
+{
+	double logDensity;
+	int corner;
+};
+LegFit logLegGivenTable(const Leg& l, const Table& t, const ModelParams& p);
+
+/** log p(S | L) = log alpha_S - Delta_LS (eq. 7), r the exact distance to the leg's perimeter
+ *  and the normal compared with the outward normal of the nearest face. */
+double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelParams& p);
+
+/** Null causes: a leg without a table (eq. 8), a shapelet without a leg (eq. 9). */
+double logLegNull(const ModelParams& p);
+double logShapeletNull(const ModelParams& p);
+}  // namespace whiskermap::model

@@ -1,0 +1,39 @@
+#pragma once
+#include <whiskermap/core/IniSection.h>
+
+namespace whiskermap::model
+{
+/** Every constant of the generative model (paper sections 3-5), SI units (metres, radians).
+ *  Defaults and the reasons for them: config/model.ini and doc/model.md. */
+struct ModelParams
+{
+	// Noise of the part-whole relations (eqs. 6-7)
+	double sigma_r = 0.01;  ///< position, metres
+	double sigma_theta = 0.087;  ///< angle, radians (5 degrees)
+	double sigma_w = 0.01;  ///< leg width, metres
+	double sigma_tau = 0.1;  ///< texture
+
+	// Priors (eqs. 4, 5, 7, 8, 9): densities, not normalised
+	double c_T = 1e-2;  ///< flat table prior (eq. 4)
+	double c_L = 1e-3;  ///< leg without a table (eq. 8)
+	double c_S = 1e-4;  ///< shapelet without a leg (eq. 9)
+	double alpha_L = 7e3;  ///< scale of p(L | T) (eq. 5)
+	double alpha_S = 1e7;  ///< scale of p(S | L) (eq. 7)
+
+	double epsilon = 1e-2;  ///< constraint factor base (eqs. 15-17)
+	double delta = 0.01;  ///< half-width of a hypothesis cell in (x, y, theta) (eq. 19)
+
+	// The known table (strong prior)
+	double table_length = 1.0;  ///< leg-centre spacing along the table's x axis, metres
+	double table_width = 0.6;  ///< leg-centre spacing along its y axis, metres
+	double leg_width = 0.05;  ///< side of a square leg, metres
+	double texture = 0.5;  ///< texture of table legs
+
+	/** Radius gate for candidate parents: a parent is considered only when the child lies
+	 *  within this distance of it (a leg's corner, a shapelet the leg's perimeter), metres. */
+	double parent_gate = 0.05;
+
+	/** Reads every key of `sec` (all required) and calls sec.finish(); throws core::Error. */
+	static ModelParams fromIni(core::IniSection& sec);
+};
+}  // namespace whiskermap::model

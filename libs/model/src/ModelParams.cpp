@@ -1,0 +1,32 @@
+#include <whiskermap/model/ModelParams.h>
+
+#include <cmath>
+
+namespace whiskermap::model
+{
+ModelParams ModelParams::fromIni(core::IniSection& sec)
+{
+	constexpr double BIG = 1e30;
+	ModelParams p;
+	p.sigma_r = sec.number("sigma_r", 1e-6, 10);
+	p.sigma_theta = sec.number("sigma_theta", 1e-6, M_PI);
+	p.sigma_w = sec.number("sigma_w", 1e-6, 10);
+	p.sigma_tau = sec.number("sigma_tau", 1e-6, 10);
+	p.c_T = sec.number("c_T", 1e-300, BIG);
+	p.c_L = sec.number("c_L", 1e-300, BIG);
+	p.c_S = sec.number("c_S", 1e-300, BIG);
+	p.alpha_L = sec.number("alpha_L", 1e-300, BIG);
+	p.alpha_S = sec.number("alpha_S", 1e-300, BIG);
+	p.epsilon = sec.number("epsilon", 1e-300, 1);
+	p.delta = sec.number("delta", 1e-9, 1);
+	p.table_length = sec.number("table_length", 1e-3, 100);
+	p.table_width = sec.number("table_width", 1e-3, 100);
+	p.leg_width = sec.number("leg_width", 1e-4, 10);
+	p.texture = sec.number("texture", 0, 1);
+	p.parent_gate = sec.number("parent_gate", 1e-6, 100);
+	sec.finish();
+	if (p.leg_width >= std::min(p.table_length, p.table_width))
+		sec.fail("leg_width", "must be smaller than table_length and table_width");
+	return p;
+}
+}  // namespace whiskermap::model

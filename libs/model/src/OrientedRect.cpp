@@ -1,0 +1,41 @@
+#include <whiskermap/core/Angles.h>
+#include <whiskermap/model/OrientedRect.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace whiskermap::model
+{
+OrientedRect::PerimeterHit OrientedRect::perimeter(double x, double y) const
+{
+	const double c = std::cos(theta), s = std::sin(theta);
+	const double dx = x - cx, dy = y - cy;
+	const double lx = c * dx + s * dy, ly = -s * dx + c * dy;
+	// Signed excess beyond each pair of faces: > 0 outside that slab.
+	const double sx = std::abs(lx) - hx, sy = std::abs(ly) - hy;
+	const double distance = (sx > 0 || sy > 0) ? std::hypot(std::max(sx, 0.0), std::max(sy, 0.0))
+											   : -std::max(sx, sy);
+	// Nearest face: the one whose slab the point is furthest out of (least deep inside).
+	const double faceNormal = sx >= sy ? theta + (lx >= 0 ? 0.0 : M_PI)
+									   : theta + (ly >= 0 ? M_PI_2 : -M_PI_2);
+	return {distance, core::wrapToPi(faceNormal)};
+}
+
+bool OrientedRect::overlaps(const OrientedRect& o) const
+{
+	const double dx = o.cx - cx, dy = o.cy - cy;
+	const double axes[4] = {theta, theta + M_PI_2, o.theta, o.theta + M_PI_2};
+	for (const double a : axes)
+	{
+		const double ux = std::cos(a), uy = std::sin(a);
+		// Projected half-length of a rectangle (yaw t, half-extents h) on axis u.
+		const auto radius = [&](double t, double hxx, double hyy) {
+			return hxx * std::abs(std::cos(t) * ux + std::sin(t) * uy) +
+				   hyy * std::abs(-std::sin(t) * ux + std::cos(t) * uy);
+		};
+		if (std::abs(dx * ux + dy * uy) >= radius(theta, hx, hy) + radius(o.theta, o.hx, o.hy))
+			return false;
+	}
+	return true;
+}
+}  // namespace whiskermap::model

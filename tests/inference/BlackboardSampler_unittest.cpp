@@ -1,0 +1,168 @@
+#include <gtest/gtest.h>
+#include <whiskermap/core/Angles.h>
+#include <whiskermap/inference/BlackboardSampler.h>
+
+#include "SyntheticTable.h"
+
+using namespace whiskermap;
+using inference::BlackboardSampler;
+using inference::Move;
+using inference::SamplerParams;
+using inference::StepResult;
+using model::ModelParams;
+using model::NONE;
+using model::Table;
+using test::touchTable;
+
+namespace
+{
+const ModelParams P;
+const Table truth{1.3, -0.4, 0.5, P.leg_width, P.texture};
+constexpr int SEEDS = 10;
+
+// Touched legs of `t` at `corners` within `metres` of some corner of `table`.
+int cornersMatched(const Table& table, const std::vector<int>& corners, double metres)
+{
+	int n = 0;
+	for (const int c : corners)
+	{
+		double tx = 0, ty = 0;
+		model::tableCorner(truth, c, P, tx, ty);
+		for (int i = 0; i < 4; i++)
+		{
+			double x = 0, y = 0;
+			model::tableCorner(table, i, P, x, y);
+			if (std::hypot(x - tx, y - ty) <= metres)
+			{
+				n++;
+				break;
+			}
+		}
+	}
+	return n;
+}
+
+// Every hypothesis left explains a shapelet directly or shares a table with one that does.
+void expectPruned(const model::HypothesisSet& h)
+{
+	std::vector<bool> legExplains(h.legs.size(), false), tableExplains(h.tables.size(), false);
+	for (const model::Id l : h.shapeletParent)
+		if (l != NONE) legExplains[l] = true;
+	for (size_t l = 0; l < h.legs.size(); l++)
+		if (legExplains[l] && h.legs[l].parent != NONE) tableExplains[h.legs[l].parent] = true;
+	for (size_t t = 0; t < h.tables.size(); t++) EXPECT_TRUE(tableExplains[t]) << "table " << t;
+	for (size_t l = 0; l < h.legs.size(); l++)
+		EXPECT_TRUE(legExplains[l] || (h.legs[l].parent != NONE && tableExplains[h.legs[l].parent]))
+			<< "leg " << l;
+}
+}  // namespace
+
+TEST(BlackboardSampler, NoShapeletsGiveAnEmptyResult)
+{
+	BlackboardSampler sampler(P, SamplerParams{});
+	const StepResult r = sampler.step({}, 42, 0);
+	EXPECT_TRUE(r.map.tables.empty());
+	EXPECT_TRUE(r.map.legs.empty());
+	EXPECT_EQ(r.logPosterior, 0);
+	for (size_t m = 0; m < inference::MOVE_COUNT; m++) EXPECT_EQ(r.proposed[m], 0u);
+	ASSERT_TRUE(r.snapshot.has_value());
+	EXPECT_TRUE(r.snapshot->legs.empty());
+}
+
+TEST(BlackboardSampler, SameSeedSameResult)
+{
+	const auto shapelets = touchTable(truth, P, {{0, 0, 0.01}, {1, 1, -0.01}, {2, 3, 0.0}, {2, 2, 0.01}});
+	BlackboardSampler a(P, SamplerParams{}), b(P, SamplerParams{});
+	int differing = 0;
+	for (uint64_t seed = 0; seed < 5; seed++)
+	{
+		const StepResult ra = a.step(shapelets, seed, 3), rb = b.step(shapelets, seed, 3);
+		const StepResult again = a.step(shapelets, seed, 3);  // a sampler reused is still equal
+		for (const StepResult* r : {&rb, &again})
+		{
+			EXPECT_EQ(ra.logPosterior, r->logPosterior);
+			EXPECT_EQ(ra.proposed, r->proposed);
+			EXPECT_EQ(ra.accepted, r->accepted);
+			ASSERT_EQ(ra.map.tables.size(), r->map.tables.size());
+			for (size_t t = 0; t < ra.map.tables.size(); t++)
+			{
+				EXPECT_EQ(ra.map.tables[t].x, r->map.tables[t].x);
+				EXPECT_EQ(ra.map.tables[t].theta, r->map.tables[t].theta);
+			}
+			ASSERT_EQ(ra.map.legs.size(), r->map.legs.size());
+			for (size_t l = 0; l < ra.map.legs.size(); l++) EXPECT_EQ(ra.map.legs[l].y, r->map.legs[l].y);
+			EXPECT_EQ(ra.map.shapeletParent, r->map.shapeletParent);
+			EXPECT_EQ(ra.snapshot->legs.size(), r->snapshot->legs.size());
+		}
+		differing += a.step(shapelets, seed + 100).proposed != ra.proposed;
+	}
+	EXPECT_GT(differing, 0);  // the seed matters
+}
+
+TEST(BlackboardSampler, ThreeTouchedLegsGiveTheTable)
+{
+	const auto shapelets = touchTable(truth, P, {{0, 0, 0.01}, {1, 1, -0.01}, {2, 3, 0.0}});
+	BlackboardSampler sampler(P, SamplerParams{});
+	for (int seed = 0; seed < SEEDS; seed++)
+	{
+		const StepResult r = sampler.step(shapelets, seed);
+		ASSERT_EQ(r.map.tables.size(), 1u) << "seed " << seed;
+		const Table& t = r.map.tables[0];
+		EXPECT_LT(std::hypot(t.x - truth.x, t.y - truth.y), 0.03) << "seed " << seed;
+		EXPECT_LT(std::abs(core::angleDiff(t.theta, truth.theta, M_PI)), core::deg2rad(3)) << "seed " << seed;
+		EXPECT_EQ(cornersMatched(t, {0, 1, 2}, P.parent_gate), 3);
+		EXPECT_GT(r.logPosterior, 0);  // beats the empty explanation (7 * log c_S < 0)
+		expectPruned(r.map);
+		EXPECT_GT(r.acceptedOf(Move::Parent), 0u);
+	}
+}
+
+// Two legs along one side: the table and its mirror image across that side explain the
+// contacts equally well (paper section 6: "ambiguous poses"). Either is right; nothing else.
+TEST(BlackboardSampler, TwoTouchedLegsGiveTheTableOrItsMirror)
+{
+	const auto shapelets = touchTable(truth, P, {{0, 0, 0.01}, {0, 1, -0.01}, {1, 1, 0.0}, {1, 2, 0.02}});
+	BlackboardSampler sampler(P, SamplerParams{});
+	for (int seed = 0; seed < SEEDS; seed++)
+	{
+		const StepResult r = sampler.step(shapelets, seed);
+		ASSERT_EQ(r.map.tables.size(), 1u) << "seed " << seed;
+		EXPECT_EQ(cornersMatched(r.map.tables[0], {0, 1}, 0.03), 2) << "seed " << seed;
+		expectPruned(r.map);
+	}
+}
+
+// One touched leg: a table is not worth it (doc/model.md). At most one table may appear,
+// and only with a corner at that leg; the leg found must be the touched one.
+TEST(BlackboardSampler, OneTouchedLegInventsNothingElsewhere)
+{
+	const auto shapelets = touchTable(truth, P, {{3, 0, 0.01}, {3, 3, -0.01}});
+	BlackboardSampler sampler(P, SamplerParams{});
+	int withoutTable = 0;
+	for (int seed = 0; seed < SEEDS; seed++)
+	{
+		const StepResult r = sampler.step(shapelets, seed);
+		ASSERT_LE(r.map.tables.size(), 1u);
+		if (r.map.tables.empty()) withoutTable++;
+		else EXPECT_EQ(cornersMatched(r.map.tables[0], {3}, 0.03), 1);
+		double x = 0, y = 0;
+		model::tableCorner(truth, 3, P, x, y);
+		ASSERT_NE(r.map.shapeletParent[0], NONE);
+		const model::Leg& l = r.map.legs[r.map.shapeletParent[0]];
+		EXPECT_LT(std::hypot(l.x - x, l.y - y), 0.015);
+		expectPruned(r.map);
+	}
+	EXPECT_GE(withoutTable, SEEDS / 2);
+}
+
+TEST(BlackboardSampler, SnapshotOnlyWhenAsked)
+{
+	const auto shapelets = touchTable(truth, P, {{0, 0, 0.01}, {1, 1, -0.01}});
+	BlackboardSampler sampler(P, SamplerParams{});
+	EXPECT_FALSE(sampler.step(shapelets, 1).snapshot.has_value());
+	const auto last = static_cast<int>(sampler.params().schedule.size()) - 1;
+	const StepResult r = sampler.step(shapelets, 1, last);
+	ASSERT_TRUE(r.snapshot.has_value());
+	EXPECT_EQ(r.snapshot->shapeletParent.size(), shapelets.size());
+	EXPECT_FALSE(r.snapshot->legs.empty());
+}

@@ -1,0 +1,91 @@
+#include <gtest/gtest.h>
+#include <whiskermap/model/Blackboard.h>
+#include <whiskermap/model/Densities.h>
+
+#include <algorithm>
+#include <random>
+
+using namespace whiskermap::model;
+
+namespace
+{
+Leg squareLeg(double x, double y, Id parent = NONE)
+{
+	return {x, y, 0, 0.05, 0.05, 0.5, parent, -1};
+}
+}  // namespace
+
+TEST(Blackboard, LinksFollowRemovalAndIdsAreStable)
+{
+	ModelParams p;
+	Blackboard bb(p);
+	bb.reset({{0.5, 0.3, 0, 0.5, 0}, {-0.5, 0.3, 0, 0.5, 1}});
+	const Id t = bb.addTable({0, 0, 0, p.leg_width, p.texture});
+	const Id a = bb.addLeg(squareLeg(0.5, 0.3, t));
+	const Id b = bb.addLeg(squareLeg(-0.5, -0.3, t));
+	EXPECT_EQ(bb.leg(a).corner, 0);
+	EXPECT_EQ(bb.leg(b).corner, 2);
+	EXPECT_EQ(bb.cornerCounts(t), (CornerCounts{1, 0, 1, 0}));
+	EXPECT_EQ(bb.cornerCounts(t, a), (CornerCounts{0, 0, 1, 0}));
+	bb.setShapeletParent(0, a);
+	bb.setShapeletParent(1, b);
+
+	bb.removeLeg(a);
+	EXPECT_FALSE(bb.hasLeg(a));
+	EXPECT_EQ(bb.shapeletParent(0), NONE);
+	EXPECT_EQ(bb.shapeletParent(1), b);  // untouched
+	EXPECT_EQ(bb.leg(b).parent, t);
+
+	bb.removeTable(t);
+	EXPECT_EQ(bb.leg(b).parent, NONE);
+	EXPECT_EQ(bb.leg(b).corner, -1);
+	EXPECT_EQ(bb.tableCount(), 0u);
+	EXPECT_EQ(bb.legCount(), 1u);
+
+	const Id c = bb.addLeg(squareLeg(3, 3));  // reuses a's slot; b keeps its id
+	EXPECT_EQ(c, a);
+	EXPECT_TRUE(bb.hasLeg(b));
+	EXPECT_EQ(bb.leg(b).x, -0.5);
+}
+
+TEST(Blackboard, NearQueriesMatchBruteForce)
+{
+	ModelParams p;
+	Blackboard bb(p);
+	bb.reset({});
+	std::mt19937_64 rng(7);
+	std::uniform_real_distribution<double> u(-3, 3);
+	for (int i = 0; i < 300; i++) bb.addLeg(squareLeg(u(rng), u(rng)));
+	for (Id i = 0; i < 300; i += 3) bb.removeLeg(i);  // hash must forget removed legs
+	for (int q = 0; q < 100; q++)
+	{
+		const double x = u(rng), y = u(rng), r = q % 2 ? 0.07 : 0.9;
+		std::vector<Id> found, expected;
+		bb.forEachLegNear(x, y, r, [&](Id id) { found.push_back(id); });
+		for (Id id = 0; id < bb.legIdBound(); id++)
+			if (bb.hasLeg(id) && std::hypot(bb.leg(id).x - x, bb.leg(id).y - y) <= r)
+				expected.push_back(id);
+		std::sort(found.begin(), found.end());
+		EXPECT_EQ(found, expected);
+	}
+}
+
+TEST(Blackboard, CompactRenumbersLinks)
+{
+	ModelParams p;
+	Blackboard bb(p);
+	bb.reset({{0, 0, 0, 0.5, 0}});
+	const Id t0 = bb.addTable({5, 5, 0, p.leg_width, p.texture});
+	const Id t1 = bb.addTable({0, 0, 0, p.leg_width, p.texture});
+	const Id l0 = bb.addLeg(squareLeg(9, 9));
+	const Id l1 = bb.addLeg(squareLeg(-0.5, 0.3, t1));
+	bb.setShapeletParent(0, l1);
+	bb.removeTable(t0);
+	bb.removeLeg(l0);
+	const HypothesisSet h = bb.compact();
+	ASSERT_EQ(h.tables.size(), 1u);
+	ASSERT_EQ(h.legs.size(), 1u);
+	EXPECT_EQ(h.legs[0].parent, 0);
+	EXPECT_EQ(h.legs[0].corner, 1);
+	EXPECT_EQ(h.shapeletParent, std::vector<Id>{0});
+}

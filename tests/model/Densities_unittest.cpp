@@ -1,0 +1,141 @@
+#include <gtest/gtest.h>
+#include <whiskermap/model/Densities.h>
+
+#include <cmath>
+
+using namespace whiskermap::model;
+
+namespace
+{
+ModelParams handParams()
+{
+	ModelParams p;
+	p.sigma_r = 0.01;
+	p.sigma_theta = 0.1;
+	p.sigma_w = 0.01;
+	p.sigma_tau = 0.1;
+	p.alpha_L = std::exp(2.0);
+	p.alpha_S = std::exp(3.0);
+	p.c_T = 0.5;
+	p.c_L = 0.25;
+	p.c_S = 0.125;
+	p.delta = 0.05;
+	p.table_length = 1.0;
+	p.table_width = 0.6;
+	return p;
+}
+const Table table{2, 1, 0, 0.05, 0.5};
+
+// A leg of `table` exactly at corner i, fully matching it.
+Leg legAtCorner(int i, const ModelParams& p)
+{
+	Leg l;
+	tableCorner(table, i, p, l.x, l.y);
+	l.theta = table.theta;
+	l.wx = l.wy = table.leg_width;
+	l.texture = table.texture;
+	return l;
+}
+}  // namespace
+
+TEST(Densities, LogSumExp)
+{
+	EXPECT_NEAR(logSumExp(std::log(2.0), std::log(3.0)), std::log(5.0), 1e-12);
+	EXPECT_NEAR(logSumExp(-1000, -1000), -1000 + std::log(2.0), 1e-9);  // no underflow
+	EXPECT_NEAR(logSumExp(800, 0), 800, 1e-9);  // no overflow
+	EXPECT_EQ(logSumExp(-INFINITY, 1.5), 1.5);
+	EXPECT_NEAR(logNoisyOr(std::log(0.2), std::log(0.3)), std::log(0.5), 1e-12);  // eq. 12
+}
+
+TEST(Densities, PriorsNullCausesAndCell)
+{
+	const ModelParams p = handParams();
+	EXPECT_NEAR(logTablePrior(p), std::log(0.5), 1e-12);  // eq. 4
+	EXPECT_NEAR(logLegNull(p), std::log(0.25), 1e-12);  // eq. 8
+	EXPECT_NEAR(logShapeletNull(p), std::log(0.125), 1e-12);  // eq. 9
+	EXPECT_NEAR(logCell(std::log(7.0), p), std::log(0.001 * 7.0), 1e-12);  // (2*0.05)^3 * 7, eq. 19
+}
+
+TEST(Densities, TableCorners)
+{
+	const ModelParams p = handParams();
+	double x, y;
+	tableCorner(table, 0, p, x, y);
+	EXPECT_NEAR(x, 2.5, 1e-12);
+	EXPECT_NEAR(y, 1.3, 1e-12);
+	tableCorner(table, 2, p, x, y);
+	EXPECT_NEAR(x, 1.5, 1e-12);
+	EXPECT_NEAR(y, 0.7, 1e-12);
+	Table turned = table;
+	turned.theta = M_PI_2;  // corner 0 (+0.5, +0.3) goes to (-0.3, +0.5)
+	tableCorner(turned, 0, p, x, y);
+	EXPECT_NEAR(x, 1.7, 1e-12);
+	EXPECT_NEAR(y, 1.5, 1e-12);
+}
+
+TEST(Densities, LegAtItsCornerScoresAlpha)
+{
+	const ModelParams p = handParams();
+	for (int i = 0; i < 4; i++)
+	{
+		const LegFit f = logLegGivenTable(legAtCorner(i, p), table, p);
+		EXPECT_EQ(f.corner, i);
+		EXPECT_NEAR(f.logDensity, 2.0, 1e-9);  // log alpha_L, Delta = 0
+	}
+}
+
+TEST(Densities, LegGivenTableByHand)
+{
+	const ModelParams p = handParams();
+	Leg l = legAtCorner(3, p);
+	l.x += 0.01;  // 1 sigma_r off: +1
+	l.y -= 0.02;  // 2 sigma_r off: +4
+	l.wx += 0.01;  // +1
+	l.texture -= 0.2;  // +4
+	const LegFit f = logLegGivenTable(l, table, p);  // eqs. 5-6
+	EXPECT_EQ(f.corner, 3);
+	EXPECT_NEAR(f.logDensity, 2.0 - 10.0, 1e-9);
+}
+
+TEST(Densities, LegAngleComparedModuloNinetyDegrees)
+{
+	const ModelParams p = handParams();
+	Leg l = legAtCorner(1, p);
+	for (const double turn : {0.0, M_PI_2, M_PI, -M_PI_2, 3 * M_PI_2, 2 * M_PI})
+	{
+		l.theta = table.theta + turn + 0.1;  // 1 sigma_theta off, whatever the quarter turn
+		EXPECT_NEAR(logLegGivenTable(l, table, p).logDensity, 2.0 - 1.0, 1e-9) << turn;
+	}
+	Table t2 = table;
+	t2.theta = M_PI;  // a table turned by 180 degrees is the same table
+	l = legAtCorner(1, p);
+	EXPECT_NEAR(logLegGivenTable(l, t2, p).logDensity, 2.0, 1e-9);
+	EXPECT_EQ(logLegGivenTable(l, t2, p).corner, 3);
+}
+
+TEST(Densities, ShapeletGivenLegByHand)
+{
+	const ModelParams p = handParams();
+	Leg l{0, 0, 0, 0.1, 0.1, 0.5, NONE, -1};
+	whiskermap::obs::Shapelet s;
+	s.x = 0.07;  // 2 cm outside the +x face: (0.02 / 0.01)^2 = 4
+	s.y = 0.0;
+	s.normal = 0.1;  // face normal 0: 1
+	s.texture = 0.6;  // 1
+	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - 6.0, 1e-9);  // eq. 7
+	s.x = 0.05;  // on the face, exact normal and texture
+	s.normal = 0;
+	s.texture = 0.5;
+	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0, 1e-9);
+	// On the -y face with the -y normal, the leg turned by a quarter turn: same score.
+	s = {0.0, -0.05, -M_PI_2, 0.5, 0};
+	l.theta = M_PI_2;
+	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0, 1e-9);
+	// A normal pointing into the leg is wrong by pi: (pi / 0.1)^2.
+	s.normal = M_PI_2;
+	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - std::pow(M_PI / 0.1, 2), 1e-6);
+	// Angle wraps: -pi + 0.05 against pi (the -x face) is 0.05 apart.
+	s = {-0.05, 0.0, -M_PI + 0.05, 0.5, 0};
+	l.theta = 0;
+	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - 0.25, 1e-9);
+}

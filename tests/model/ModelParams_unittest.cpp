@@ -1,0 +1,72 @@
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/model/Densities.h>
+#include <whiskermap/model/ModelParams.h>
+
+using namespace whiskermap;
+using model::ModelParams;
+
+namespace
+{
+ModelParams shipped()
+{
+	mrpt::config::CConfigFile cfg(WHISKERMAP_SOURCE_DIR "/config/model.ini");
+	core::IniSection sec(cfg, "model", "model.ini");
+	return ModelParams::fromIni(sec);
+}
+}  // namespace
+
+TEST(ModelParams, ShippedConfigEqualsBuiltInDefaults)
+{
+	const ModelParams f = shipped(), d;
+	EXPECT_EQ(f.sigma_r, d.sigma_r);
+	EXPECT_EQ(f.sigma_theta, d.sigma_theta);
+	EXPECT_EQ(f.sigma_w, d.sigma_w);
+	EXPECT_EQ(f.sigma_tau, d.sigma_tau);
+	EXPECT_EQ(f.c_T, d.c_T);
+	EXPECT_EQ(f.c_L, d.c_L);
+	EXPECT_EQ(f.c_S, d.c_S);
+	EXPECT_EQ(f.alpha_L, d.alpha_L);
+	EXPECT_EQ(f.alpha_S, d.alpha_S);
+	EXPECT_EQ(f.epsilon, d.epsilon);
+	EXPECT_EQ(f.delta, d.delta);
+	EXPECT_EQ(f.table_length, d.table_length);
+	EXPECT_EQ(f.table_width, d.table_width);
+	EXPECT_EQ(f.leg_width, d.leg_width);
+	EXPECT_EQ(f.texture, d.texture);
+	EXPECT_EQ(f.parent_gate, d.parent_gate);
+}
+
+// eq. 10: uncaused, small things are less likely than large ones: p(S) < p(L) < p(T).
+TEST(ModelParams, DefaultsKeepEq10)
+{
+	const ModelParams p = shipped();
+	EXPECT_LT(model::logShapeletNull(p), model::logLegNull(p));
+	EXPECT_LT(model::logLegNull(p), model::logTablePrior(p));
+}
+
+TEST(ModelParams, UnknownMissingAndBadKeysFail)
+{
+	std::string text = "[model]\n";
+	for (const char* kv :
+		 {"sigma_r=0.01", "sigma_theta=0.1", "sigma_w=0.01", "sigma_tau=0.1", "c_T=0.01", "c_L=0.001",
+		  "c_S=0.0001", "alpha_L=1", "alpha_S=1", "epsilon=0.01", "delta=0.01", "table_length=1",
+		  "table_width=0.6", "leg_width=0.05", "texture=0.5", "parent_gate=0.05"})
+		text += std::string(kv) + "\n";
+	const auto load = [](const std::string& t) {
+		mrpt::config::CConfigFileMemory cfg(t);
+		core::IniSection sec(cfg, "model", "test.ini");
+		return ModelParams::fromIni(sec);
+	};
+	EXPECT_EQ(load(text).table_width, 0.6);
+	EXPECT_THROW(load(text + "sigma_rr=1\n"), core::Error);  // misspelt extra key
+	const auto with = [&](const std::string& from, const std::string& to) {
+		std::string t = text;
+		return t.replace(t.find(from), from.size(), to);
+	};
+	EXPECT_THROW(load(with("epsilon=0.01", "epsilon=2")), core::Error);  // out of range
+	EXPECT_THROW(load(with("delta=0.01\n", "")), core::Error);  // missing
+	EXPECT_THROW(load(with("leg_width=0.05", "leg_width=0.7")), core::Error);  // wider than the table
+}
