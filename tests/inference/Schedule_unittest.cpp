@@ -38,8 +38,8 @@ TEST(AnnealingSchedule, Geometric)
 
 TEST(SamplerParams, ShippedConfigEqualsBuiltInDefaults)
 {
-	mrpt::config::CConfigFile cfg(WHISKERMAP_SOURCE_DIR "/config/model.ini");
-	core::IniSection sec(cfg, "sampler", "model.ini");
+	mrpt::config::CConfigFile cfg(WHISKERMAP_SOURCE_DIR "/config/whisker-map.ini");
+	core::IniSection sec(cfg, "MetricMap_hierarchicalObjectMap_00_sampler", "whisker-map.ini");
 	const SamplerParams f = SamplerParams::fromIni(sec), d;
 	EXPECT_EQ(f.r1, d.r1);
 	EXPECT_EQ(f.r2, d.r2);
@@ -54,11 +54,11 @@ TEST(SamplerParams, ShippedConfigEqualsBuiltInDefaults)
 
 TEST(SamplerParams, BadKeysFail)
 {
-	mrpt::config::CConfigFile shipped(WHISKERMAP_SOURCE_DIR "/config/model.ini");
+	mrpt::config::CConfigFile shipped(WHISKERMAP_SOURCE_DIR "/config/whisker-map.ini");
 	std::string text = "[sampler]\n";
 	std::vector<std::string> keys;
-	shipped.getAllKeys("sampler", keys);
-	for (const auto& k : keys) text += k + "=" + shipped.read_string("sampler", k, "") + "\n";
+	shipped.getAllKeys("MetricMap_hierarchicalObjectMap_00_sampler", keys);
+	for (const auto& k : keys) text += k + "=" + shipped.read_string("MetricMap_hierarchicalObjectMap_00_sampler", k, "") + "\n";
 	const auto load = [](const std::string& t) {
 		mrpt::config::CConfigFileMemory cfg(t);
 		core::IniSection sec(cfg, "sampler", "test.ini");

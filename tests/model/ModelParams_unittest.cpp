@@ -12,8 +12,8 @@ namespace
 {
 ModelParams shipped()
 {
-	mrpt::config::CConfigFile cfg(WHISKERMAP_SOURCE_DIR "/config/model.ini");
-	core::IniSection sec(cfg, "model", "model.ini");
+	mrpt::config::CConfigFile cfg(WHISKERMAP_SOURCE_DIR "/config/whisker-map.ini");
+	core::IniSection sec(cfg, "MetricMap_hierarchicalObjectMap_00_model", "whisker-map.ini");
 	return ModelParams::fromIni(sec);
 }
 }  // namespace

@@ -1,6 +1,7 @@
 #include <CLI/CLI.hpp>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/core/Error.h>
+#include <whiskermap/core/conciseMessage.h>
 #include <whiskermap/render/TopDownImage.h>
 #include <whiskermap/world/NoisePreset.h>
 #include <whiskermap/world/RawlogWriter.h>
@@ -161,7 +162,7 @@ int WhiskerSimApp::main(int argc, char** argv)
 	}
 	catch (const std::exception& e)
 	{
-		std::cerr << "whisker-sim: error: " << e.what() << "\n";
+		std::cerr << "whisker-sim: error: " << core::conciseMessage(e) << "\n";
 		return 1;
 	}
 }

@@ -135,6 +135,12 @@ std::unique_ptr<mrpt::config::CConfigFile> openIniFile(
 	return std::make_unique<mrpt::config::CConfigFile>(path);
 }
 
+std::string configLabel(const mrpt::config::CConfigFileBase& cfg)
+{
+	const auto* file = dynamic_cast<const mrpt::config::CConfigFile*>(&cfg);
+	return file && !file->getAssociatedFile().empty() ? file->getAssociatedFile() : "<config>";
+}
+
 void rejectUnknownSections(
 	const mrpt::config::CConfigFileBase& cfg, const std::set<std::string>& allowed,
 	const std::string& prefix, const std::string& fileLabel)

@@ -5,41 +5,19 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/core/Error.h>
+#include <whiskermap/core/conciseMessage.h>
 #include <whiskermap/obs/RawlogReader.h>
 #include <zlib.h>
 
 #include <array>
 #include <filesystem>
 #include <optional>
-#include <sstream>
 
 using namespace whiskermap::obs;
 using whiskermap::core::Error;
 
 namespace
 {
-/** The one line that matters in an exception message. MRPT's span many lines and nest
- *  ("==== MRPT exception ====", "Message: ...", "Original exception:" + the cause, a call
- *  stack): keep the innermost cause. A stream that ran dry mid-object is a truncation. */
-std::string reason(const std::string& what)
-{
-	std::istringstream in(what);
-	std::string line, best, prev;
-	const std::string msgTag = "Message:", banner = "==== MRPT exception ====";
-	while (std::getline(in, line))
-	{
-		if (line.rfind(msgTag, 0) == 0)
-			best = line.substr(line.find_first_not_of(' ', msgTag.size()));
-		else if (prev == "Original exception:" && line != banner)
-			best = line;
-		prev = line;
-	}
-	if (best.empty()) best = what.substr(0, what.find('\n'));
-	if (best.find("Cannot read requested number of bytes") != std::string::npos)
-		return "truncated file (an object is cut off)";
-	return best;
-}
-
 /** Decompresses a whole gzip file once to catch truncation or corruption, which the
  *  object reader could otherwise take for a clean end of file. */
 void checkGzipIntegrity(const std::string& path)
@@ -108,7 +86,7 @@ RawlogReader::Contents RawlogReader::read(const std::string& path)
 		{
 			throw Error(
 				path + ": corrupt rawlog at object #" + std::to_string(c.objects) + ": " +
-				reason(e.what()));
+				core::conciseMessage(e));
 		}
 		if (auto acts = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
 		{

@@ -57,6 +57,9 @@ class IniSection
  *  ("world file" -> "x.ini: no such world file", "x.ini: line 3: malformed line '...'"). */
 std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path, const std::string& kind);
 
+/** The file behind a config source (its path for a CConfigFile), for error messages. */
+std::string configLabel(const mrpt::config::CConfigFileBase& cfg);
+
 /** Throws if `cfg` has a section not in `allowed` (exact names), or, when `prefix` is not
  *  empty, not starting with it. Used to reject unknown sections in strict files. */
 void rejectUnknownSections(

@@ -5,7 +5,7 @@
 namespace whiskermap::inference
 {
 /** Settings of the annealed blackboard sampler (Algorithm 1). Defaults and reasons:
- *  config/model.ini [sampler], doc/sampler.md. */
+ *  config/whisker-map.ini [MetricMap_hierarchicalObjectMap_00_sampler], doc/sampler.md. */
 struct SamplerParams
 {
 	/** Move thresholds on u ~ U(0,1) per hypothesis: death below r1, new parent below r2,

@@ -4,7 +4,7 @@
 namespace whiskermap::model
 {
 /** Every constant of the generative model (paper sections 3-5), SI units (metres, radians).
- *  Defaults and the reasons for them: config/model.ini and doc/model.md. */
+ *  Defaults and the reasons for them: config/whisker-map.ini [MetricMap_hierarchicalObjectMap_00_model] and doc/model.md. */
 struct ModelParams
 {
 	// Noise of the part-whole relations (eqs. 6-7)
@@ -27,7 +27,7 @@ struct ModelParams
 	double table_length = 1.0;  ///< leg-centre spacing along the table's x axis, metres
 	double table_width = 0.6;  ///< leg-centre spacing along its y axis, metres
 	double leg_width = 0.05;  ///< side of a square leg, metres
-	double texture = 0.5;  ///< texture of table legs
+	double texture = 0.7;  ///< texture of table legs (the paper arena's)
 
 	/** Radius gate for candidate parents: a parent is considered only when the child lies
 	 *  within this distance of it (a leg's corner, a shapelet the leg's perimeter), metres. */

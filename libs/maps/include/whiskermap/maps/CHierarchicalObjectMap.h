@@ -1,0 +1,125 @@
+#pragma once
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/maps/CMetricMap.h>
+#include <mrpt/math/TBoundingBox.h>
+#include <whiskermap/inference/BlackboardSampler.h>
+#include <whiskermap/inference/SamplerParams.h>
+#include <whiskermap/inference/ShapeletMemory.h>
+#include <whiskermap/maps/SweepLikelihood.h>
+#include <whiskermap/maps/TPoseRecord.h>
+#include <whiskermap/maps/TableConsolidator.h>
+#include <whiskermap/model/ModelParams.h>
+
+#include <array>
+#include <memory>
+
+namespace whiskermap::maps
+{
+/** A hierarchical object map built from whisker contacts: an MRPT metric map (CMetricMap),
+ *  created by name ("hierarchicalObjectMap") from a CMultiMetricMap .ini, so it plugs into
+ *  MRPT's pipelines and particle filters.
+ *
+ *  - insertObservation(CObservationWhiskerContacts, robot pose) runs one time step of the
+ *    annealed blackboard sampler (Fox & Prescott's Algorithm 1) on the working memory of the
+ *    most recent shapelets, records the step's MAP tables (per-pose records, as the paper
+ *    collates them) and merges them into a consolidated object map.
+ *  - computeObservationLikelihood(sweep, pose) casts each whisker against the consolidated
+ *    map's legs (SweepLikelihood).
+ *  Options and their .ini sections: doc/map-plugin.md, config/whisker-map.ini. */
+class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
+{
+	DEFINE_SERIALIZABLE(CHierarchicalObjectMap, whiskermap::maps)
+
+   public:
+	/** [<prefix>_insertOpts]: working memory, seeding, consolidation. */
+	struct TInsertionOptions : public mrpt::config::CLoadableOptions
+	{
+		size_t memory_size = 7;  ///< shapelets in working memory (paper: 7)
+		uint64_t seed = 1;  ///< step k uses a seed derived from (seed, k)
+		TableConsolidator::TOptions consolidation;
+		void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+		void dumpToTextStream(std::ostream& out) const override;
+	};
+
+	/** [<prefix>_likelihoodOpts]: the sweep likelihood and which objects it uses. */
+	struct TLikelihoodOptions : public mrpt::config::CLoadableOptions
+	{
+		SweepLikelihood::TOptions sweep;
+		uint32_t min_support = 3;  ///< objects supported by fewer poses are ignored
+		void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+		void dumpToTextStream(std::ostream& out) const override;
+	};
+
+	/** [<prefix>_creationOpts] (besides MRPT's generic keys): drawing. */
+	struct TRenderOptions
+	{
+		double table_height = 0.7;  ///< metres, for 3-D views and exports
+	};
+
+	CHierarchicalObjectMap();
+	CHierarchicalObjectMap(const CHierarchicalObjectMap& other);
+	CHierarchicalObjectMap& operator=(const CHierarchicalObjectMap& other);
+
+	TInsertionOptions insertionOptions;
+	TLikelihoodOptions likelihoodOptions;
+	TRenderOptions renderOptions;
+	model::ModelParams modelParams;  ///< [<prefix>_model]
+	inference::SamplerParams samplerParams;  ///< [<prefix>_sampler]
+
+	/** Per inserted sweep, in order. */
+	const std::vector<TPoseRecord>& poseRecords() const { return m_poses; }
+	/** The consolidated objects. */
+	const std::vector<TMapObject>& objects() const { return m_consolidator.objects(); }
+	/** Every shapelet inserted, world frame. */
+	const std::vector<obs::Shapelet>& shapelets() const { return m_shapelets; }
+	/** Totals over all steps of proposals and acceptances per move type. */
+	const std::array<uint64_t, inference::MOVE_COUNT>& proposed() const { return m_proposed; }
+	const std::array<uint64_t, inference::MOVE_COUNT>& accepted() const { return m_accepted; }
+
+	/** The last step's full result (MAP blackboard, snapshot if asked for). */
+	const inference::StepResult& lastStep() const { return m_lastStep; }
+	/** Ask the next insertions for a blackboard snapshot at this schedule index (-1: none). */
+	void setSnapshotTemperature(int index) { m_snapshotTemperature = index; }
+
+	/** A model table as a full table of the known size. */
+	world::Table toWorldTable(const model::Table& t) const;
+	/** Legs of the objects with at least likelihoodOptions.min_support, as solids. */
+	std::vector<world::Obstacle> mappedLegs() const;
+
+	// See base class docs
+	bool isEmpty() const override;
+	void saveMetricMapRepresentationToFile(const std::string& prefix) const override;
+	std::string asString() const override;
+	void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
+	/** Shapelets and mapped tables (up to the table height). */
+	mrpt::math::TBoundingBoxf boundingBox() const;
+
+   protected:
+	void internal_clear() override;
+	bool internal_insertObservation(
+		const mrpt::obs::CObservation& obs,
+		const std::optional<const mrpt::poses::CPose3D>& robotPose) override;
+	double internal_computeObservationLikelihood(
+		const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& takenFrom) const override;
+	bool internal_canComputeObservationLikelihood(const mrpt::obs::CObservation& obs) const override;
+
+   private:
+	std::vector<TPoseRecord> m_poses;
+	TableConsolidator m_consolidator;
+	std::vector<obs::Shapelet> m_shapelets;
+	inference::ShapeletMemory m_memory;
+	std::array<uint64_t, inference::MOVE_COUNT> m_proposed{}, m_accepted{};
+	inference::StepResult m_lastStep;
+	int m_snapshotTemperature = -1;
+	/** Built on first insertion from modelParams/samplerParams (its buffers are reused). */
+	std::unique_ptr<inference::BlackboardSampler> m_sampler;
+
+	MAP_DEFINITION_START(CHierarchicalObjectMap)
+	TInsertionOptions insertionOptions;
+	TLikelihoodOptions likelihoodOptions;
+	TRenderOptions renderOptions;
+	model::ModelParams modelParams;
+	inference::SamplerParams samplerParams;
+	MAP_DEFINITION_END(CHierarchicalObjectMap)
+};
+}  // namespace whiskermap::maps

@@ -1,0 +1,20 @@
+#pragma once
+#include <whiskermap/maps/TMapObject.h>
+#include <whiskermap/maps/TPoseRecord.h>
+
+#include <string>
+#include <vector>
+
+namespace whiskermap::maps
+{
+/** The map's CSV outputs (doc/outputs.md). Metres and degrees; written via a temporary file
+ *  renamed when complete. Throws core::Error when a file cannot be written. */
+struct MapCsv
+{
+	/** `id,x,y,yaw_deg,length,width,leg_width,texture,existence,support`, one row per object. */
+	static void writeObjects(const std::string& path, const std::vector<TMapObject>& objects);
+	/** `pose,x,y,yaw_deg,length,width,leg_width,texture,log_posterior`, one row per MAP table
+	 *  per pose (pose = 0-based index of the sweep; poses without tables have no row). */
+	static void writePerPose(const std::string& path, const std::vector<TPoseRecord>& poses);
+};
+}  // namespace whiskermap::maps

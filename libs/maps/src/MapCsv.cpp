@@ -1,0 +1,57 @@
+#include <whiskermap/core/Angles.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/maps/MapCsv.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+
+namespace whiskermap::maps
+{
+namespace
+{
+void writeFile(const std::string& path, const char* header, const std::function<void(FILE*)>& rows)
+{
+	const std::string tmp = path + ".tmp";
+	FILE* f = std::fopen(tmp.c_str(), "w");
+	if (!f) throw core::Error(path + ": cannot create file");
+	std::fprintf(f, "%s\n", header);
+	rows(f);
+	const bool ok = std::ferror(f) == 0;
+	if (std::fclose(f) != 0 || !ok) throw core::Error(path + ": write failed");
+	std::filesystem::rename(tmp, path);
+}
+
+void writeTable(FILE* f, const world::Table& t)
+{
+	std::fprintf(
+		f, "%.6f,%.6f,%.4f,%.6f,%.6f,%.6f,%.4f", t.x, t.y, core::rad2deg(t.yaw), t.length, t.width,
+		t.leg_width, t.texture);
+}
+}  // namespace
+
+void MapCsv::writeObjects(const std::string& path, const std::vector<TMapObject>& objects)
+{
+	writeFile(path, "id,x,y,yaw_deg,length,width,leg_width,texture,existence,support", [&](FILE* f) {
+		for (size_t i = 0; i < objects.size(); i++)
+		{
+			std::fprintf(f, "%zu,", i);
+			writeTable(f, objects[i].table);
+			std::fprintf(f, ",%.4f,%u\n", objects[i].existence(), objects[i].support);
+		}
+	});
+}
+
+void MapCsv::writePerPose(const std::string& path, const std::vector<TPoseRecord>& poses)
+{
+	writeFile(path, "pose,x,y,yaw_deg,length,width,leg_width,texture,log_posterior", [&](FILE* f) {
+		for (size_t i = 0; i < poses.size(); i++)
+			for (const auto& t : poses[i].tables)
+			{
+				std::fprintf(f, "%zu,", i);
+				writeTable(f, t);
+				std::fprintf(f, ",%.6f\n", poses[i].logPosterior);
+			}
+	});
+}
+}  // namespace whiskermap::maps
