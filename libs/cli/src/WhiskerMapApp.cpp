@@ -2,6 +2,9 @@
 
 #include <CLI/CLI.hpp>
 #include <mrpt/maps/CMultiMetricMap.h>
+#include <mrpt/maps/CSimpleMap.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose3DPDFGaussian.h>
 #include <mrpt/opengl/CGridPlaneXY.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfLines.h>
@@ -138,6 +141,20 @@ void writeScene(const maps::CHierarchicalObjectMap& map, const std::string& path
 	if (!scene.saveToFile(path)) throw core::Error(path + ": cannot write 3-D scene");
 }
 
+/** The sweeps with their poses as a CSimpleMap: MRPT apps (pf-localization, the map
+ *  builders) rebuild the map from it with the same [MetricMap] .ini. */
+void writeSimpleMap(const obs::RawlogReader::Contents& rawlog, const std::string& path)
+{
+	mrpt::maps::CSimpleMap sm;
+	for (const auto& s : rawlog.sweeps)
+	{
+		auto sf = mrpt::obs::CSensoryFrame::Create();
+		sf->insert(s.obs);
+		sm.insert(mrpt::poses::CPose3DPDFGaussian::Create(mrpt::poses::CPose3D(s.robotPose)), sf);
+	}
+	if (!sm.saveToFile(path)) throw core::Error(path + ": cannot write simple map");
+}
+
 void writeSummary(
 	const std::string& path, const Options& o, const maps::CHierarchicalObjectMap& map,
 	const std::vector<double>& ms)
@@ -237,6 +254,7 @@ int run(Options& o)
 	drawMontage(*map, w, std::filesystem::path(o.input).filename().string(), out.path("montage.png"));
 	drawMap(*map, w, out.path("map.png"));
 	writeScene(*map, out.path("map.3Dscene"));
+	writeSimpleMap(rawlog, out.path("map.simplemap"));
 	writeSummary(out.path("summary.json"), o, *map, ms);
 	out.commit();
 	if (!o.quiet)
@@ -252,7 +270,7 @@ int WhiskerMapApp::main(int argc, char** argv)
 		"whisker-map: map tables from whisker contacts. Runs a CHierarchicalObjectMap (Fox & "
 		"Prescott's hierarchical model and annealed blackboard sampler) over every whisker sweep "
 		"of a rawlog (either MRPT layout) and writes, in OUTDIR: per_pose_tables.csv, "
-		"map_tables.csv, montage.png, map.png, map.3Dscene, summary.json (doc/outputs.md)."};
+		"map_tables.csv, montage.png, map.png, map.3Dscene, map.simplemap, summary.json (doc/outputs.md)."};
 	Options o;
 	app.add_option("-i,--input", o.input, "Input rawlog with CObservationWhiskerContacts sweeps")->required();
 	app.add_option("-c,--config", o.config, "CMultiMetricMap .ini (default: the shipped config/whisker-map.ini)");
