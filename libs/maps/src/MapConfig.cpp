@@ -5,6 +5,8 @@
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/maps/MapConfig.h>
 
+#include <memory>
+
 namespace whiskermap::maps
 {
 mrpt::maps::TSetOfMetricMapInitializers MapConfig::load(const std::string& path)
@@ -17,6 +19,7 @@ mrpt::maps::TSetOfMetricMapInitializers MapConfig::load(const std::string& path)
 	std::vector<std::string> keys;
 	file->getAllKeys(section, keys);
 	size_t ours = 0;
+	std::string ourName = "hierarchicalObjectMap";
 	for (const auto& k : keys)
 	{
 		const std::string suffix = "_count";
@@ -27,13 +30,20 @@ mrpt::maps::TSetOfMetricMapInitializers MapConfig::load(const std::string& path)
 				path + ": [" + section + "] " + k + ": unknown map type '" + name +
 				"' (is its library loaded?)");
 		if (name == "hierarchicalObjectMap" || name == "whiskermap::maps::CHierarchicalObjectMap")
+		{
 			ours += file->read_uint64_t(section, k, 0);
+			ourName = name;
+		}
 	}
 	if (ours != 1)
 		throw core::Error(
 			path + ": [" + section + "]: needs exactly one hierarchicalObjectMap, found " +
 			std::to_string(ours));
 
+	// Our sections are checked first, outside MRPT's loader: it rewraps exceptions and
+	// garbles messages that contain "] ".
+	std::unique_ptr<mrpt::maps::TMetricMapInitializer>(CHierarchicalObjectMap::MapDefinition())
+		->loadFromConfigFile(*file, section + "_" + ourName + "_00");
 	mrpt::maps::TSetOfMetricMapInitializers inits;
 	try
 	{
@@ -41,7 +51,7 @@ mrpt::maps::TSetOfMetricMapInitializers MapConfig::load(const std::string& path)
 	}
 	catch (const std::exception& e)
 	{
-		throw core::Error(core::conciseMessage(e));  // already names file, section and key
+		throw core::Error(path + ": " + core::conciseMessage(e));
 	}
 	return inits;
 }

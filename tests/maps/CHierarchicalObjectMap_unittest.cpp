@@ -1,0 +1,189 @@
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/maps/CMultiMetricMap.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/serialization/CArchive.h>
+#include <whiskermap/core/Angles.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/maps/CHierarchicalObjectMap.h>
+#include <whiskermap/maps/MapConfig.h>
+#include <whiskermap/obs/RawlogReader.h>
+#include <whiskermap/world/World.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace whiskermap;
+using maps::CHierarchicalObjectMap;
+
+namespace
+{
+const std::string SRC = WHISKERMAP_SOURCE_DIR;
+const std::string CONFIG = SRC + "/config/whisker-map.ini";
+
+/** The shipped config's multimap after every sweep of a shipped dataset (built once). */
+struct Mapped
+{
+	mrpt::maps::CMultiMetricMap multimap;
+	obs::RawlogReader::Contents rawlog;
+	CHierarchicalObjectMap::Ptr map;
+	explicit Mapped(const std::string& preset)
+		: multimap(maps::MapConfig::load(CONFIG)),
+		  rawlog(obs::RawlogReader::read(SRC + "/datasets/paper_arena/" + preset + ".rawlog")),
+		  map(multimap.mapByClass<CHierarchicalObjectMap>())
+	{
+		for (const auto& s : rawlog.sweeps) multimap.insertObservation(*s.obs, mrpt::poses::CPose3D(s.robotPose));
+	}
+};
+const Mapped& defaultMapped()
+{
+	static const Mapped m("default");
+	return m;
+}
+
+std::string configError(const std::string& text)
+{
+	const auto p = (std::filesystem::temp_directory_path() / "whiskermap_mapconfig.ini").string();
+	std::ofstream(p) << text;
+	try
+	{
+		maps::MapConfig::load(p);
+	}
+	catch (const core::Error& e)
+	{
+		return e.what();
+	}
+	return "loaded";
+}
+}  // namespace
+
+TEST(CHierarchicalObjectMap, IsCreatedByNameFromTheShippedIni)
+{
+	mrpt::maps::CMultiMetricMap mm(maps::MapConfig::load(CONFIG));
+	ASSERT_EQ(mm.maps.size(), 1u);
+	auto map = mm.mapByClass<CHierarchicalObjectMap>();
+	ASSERT_TRUE(map);
+	EXPECT_TRUE(map->isEmpty());
+	EXPECT_EQ(map->insertionOptions.memory_size, 7u);
+	EXPECT_EQ(map->likelihoodOptions.min_support, 3u);
+	EXPECT_DOUBLE_EQ(map->modelParams.texture, 0.7);
+}
+
+TEST(CHierarchicalObjectMap, ConfigMistakesFailLoudly)
+{
+	const std::string ok = "[MetricMap]\nhierarchicalObjectMap_count=1\n";
+	EXPECT_EQ(configError(ok), "loaded");
+	EXPECT_NE(configError("[MetricMap]\nhierarchicalObjectMaps_count=1\n").find("unknown map type 'hierarchicalObjectMaps'"), std::string::npos);
+	EXPECT_NE(configError("[MetricMap]\npointsMap_count=1\n").find("needs exactly one hierarchicalObjectMap, found 0"), std::string::npos);
+	EXPECT_NE(configError(ok + "[MetricMap_hierarchicalObjectMap_00_insertOpts]\nmemory_sise=7\n").find("memory_sise: unknown key"), std::string::npos);
+	EXPECT_NE(configError(ok + "[MetricMap_hierarchicalObjectMap_00_insertOpt]\nmemory_size=7\n").find("unknown section"), std::string::npos);
+	EXPECT_NE(configError(ok + "[MetricMap_hierarchicalObjectMap_00_likelihoodOpts]\np_miss=2\n").find("p_miss"), std::string::npos);
+	EXPECT_NE(configError(ok + "[MetricMap_hierarchicalObjectMap_00_model]\nsigma_r=0.01\n").find("missing required key"), std::string::npos);
+	EXPECT_NE(configError("[MetricMap]\n").find("needs exactly one"), std::string::npos);
+}
+
+TEST(CHierarchicalObjectMap, FindsEveryTableOfThePaperArena)
+{
+	const auto& m = defaultMapped();
+	const auto truth = world::World::load(SRC + "/config/worlds/paper_arena.ini");
+	EXPECT_EQ(m.map->poseRecords().size(), 400u);
+	for (const auto& t : truth.tables)
+	{
+		bool found = false;
+		for (const auto& o : m.map->objects())
+			found = found || (o.support >= 3 && std::hypot(o.table.x - t.x, o.table.y - t.y) < 0.1 &&
+							  std::abs(core::angleDiff(o.table.yaw, t.yaw, M_PI)) < core::deg2rad(5));
+		EXPECT_TRUE(found) << "table at " << t.x << ", " << t.y;
+	}
+}
+
+TEST(CHierarchicalObjectMap, LikelihoodPeaksAtTheTruePoses)
+{
+	const auto& m = defaultMapped();
+	// Sum over every sweep of the dataset, for the true poses shifted by a grid of offsets.
+	auto total = [&](double dx, double dy, double dth) {
+		double s = 0;
+		for (const auto& sw : m.rawlog.sweeps)
+			s += m.map->computeObservationLikelihood(
+				*sw.obs, mrpt::poses::CPose3D(sw.robotPose + mrpt::poses::CPose2D(dx, dy, dth)));
+		return s;
+	};
+	const double atTruth = total(0, 0, 0);
+	for (double dx : {-0.1, -0.05, 0.0, 0.05, 0.1})
+		for (double dy : {-0.1, -0.05, 0.0, 0.05, 0.1})
+			for (double dth : {-0.1, 0.0, 0.1})
+			{
+				if (dx == 0 && dy == 0 && dth == 0) continue;
+				EXPECT_LT(total(dx, dy, dth), atTruth) << dx << " " << dy << " " << dth;
+			}
+}
+
+TEST(CHierarchicalObjectMap, SerializationRoundTripThroughCMultiMetricMap)
+{
+	const auto& m = defaultMapped();
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << m.multimap;
+	buf.Seek(0);
+	mrpt::maps::CMultiMetricMap back;
+	arch >> back;
+	auto b = back.mapByClass<CHierarchicalObjectMap>();
+	ASSERT_TRUE(b);
+	ASSERT_EQ(b->objects().size(), m.map->objects().size());
+	for (size_t i = 0; i < b->objects().size(); i++)
+	{
+		EXPECT_EQ(b->objects()[i].table.x, m.map->objects()[i].table.x);
+		EXPECT_EQ(b->objects()[i].support, m.map->objects()[i].support);
+		EXPECT_EQ(b->objects()[i].evidence, m.map->objects()[i].evidence);
+	}
+	ASSERT_EQ(b->poseRecords().size(), m.map->poseRecords().size());
+	EXPECT_EQ(b->poseRecords()[123].logPosterior, m.map->poseRecords()[123].logPosterior);
+	EXPECT_EQ(b->shapelets().size(), m.map->shapelets().size());
+	EXPECT_EQ(b->proposed(), m.map->proposed());
+	EXPECT_EQ(b->asString(), m.map->asString());
+	// The reloaded map scores sweeps exactly as the original.
+	const auto& s = m.rawlog.sweeps[200];
+	EXPECT_EQ(b->computeObservationLikelihood(*s.obs, mrpt::poses::CPose3D(s.robotPose)),
+			  m.map->computeObservationLikelihood(*s.obs, mrpt::poses::CPose3D(s.robotPose)));
+}
+
+TEST(CHierarchicalObjectMap, SameSeedSameMapAndCopiesContinueIdentically)
+{
+	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/paper_arena/default.rawlog");
+	CHierarchicalObjectMap a, c;
+	c.insertionOptions.seed = 99;
+	for (size_t i = 0; i < 100; i++)
+	{
+		const mrpt::poses::CPose3D p(rawlog.sweeps[i].robotPose);
+		a.insertObservation(*rawlog.sweeps[i].obs, p);
+		c.insertObservation(*rawlog.sweeps[i].obs, p);
+	}
+	CHierarchicalObjectMap b = a;  // a particle filter copies maps
+	bool seedMatters = false;
+	for (size_t i = 100; i < 200; i++)
+	{
+		const mrpt::poses::CPose3D p(rawlog.sweeps[i].robotPose);
+		a.insertObservation(*rawlog.sweeps[i].obs, p);
+		b.insertObservation(*rawlog.sweeps[i].obs, p);
+		c.insertObservation(*rawlog.sweeps[i].obs, p);
+	}
+	ASSERT_EQ(a.poseRecords().size(), 200u);
+	for (size_t i = 0; i < 200; i++)
+	{
+		EXPECT_EQ(a.poseRecords()[i].logPosterior, b.poseRecords()[i].logPosterior);
+		seedMatters = seedMatters || a.poseRecords()[i].logPosterior != c.poseRecords()[i].logPosterior;
+	}
+	EXPECT_TRUE(seedMatters);
+	a.clear();
+	EXPECT_TRUE(a.isEmpty());
+}
+
+TEST(CHierarchicalObjectMap, IgnoresOtherObservations)
+{
+	CHierarchicalObjectMap m;
+	mrpt::obs::CObservationOdometry odo;
+	EXPECT_FALSE(m.insertObservation(odo));
+	EXPECT_FALSE(m.canComputeObservationLikelihood(odo));
+	EXPECT_TRUE(m.isEmpty());
+}
