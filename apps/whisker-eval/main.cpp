@@ -1,0 +1,3 @@
+#include <whiskermap/cli/WhiskerEvalApp.h>
+
+int main(int argc, char** argv) { return whiskermap::cli::WhiskerEvalApp::main(argc, argv); }

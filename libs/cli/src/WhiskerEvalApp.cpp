@@ -1,0 +1,129 @@
+#include <CLI/CLI.hpp>
+#include <whiskermap/cli/WhiskerEvalApp.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/core/conciseMessage.h>
+#include <whiskermap/eval/EvalReport.h>
+#include <whiskermap/eval/TableCsv.h>
+#include <whiskermap/obs/RawlogReader.h>
+
+#include <iostream>
+
+namespace whiskermap::cli
+{
+namespace
+{
+struct Options
+{
+	std::string world, map, perPose, rawlog;
+	size_t poses = 0;
+	uint32_t minSupport = 1;
+	bool json = false;
+	eval::EvalOptions eval;
+};
+
+int run(const Options& o)
+{
+	o.eval.validate();
+	const auto w = world::World::load(o.world);
+	eval::EvalReport report;
+	report.options = o.eval;
+	const auto estimated = eval::TableCsv::supported(eval::TableCsv::readMap(o.map), o.minSupport);
+	report.map = eval::MapEvaluation::compute(w.tables, estimated, o.eval);
+
+	std::vector<obs::RawlogReader::Sweep> sweeps;
+	if (!o.rawlog.empty())
+	{
+		sweeps = obs::RawlogReader::read(o.rawlog).sweeps;
+		report.identifiability =
+			eval::Identifiability::of(w, sweeps, eval::Identifiability::defaultGate(sweeps));
+	}
+	if (!o.perPose.empty())
+	{
+		if (o.rawlog.empty() && o.poses == 0)
+			throw core::Error(o.perPose + ": the number of poses is unknown: give --poses N or --rawlog");
+		if (!o.rawlog.empty() && o.poses != 0 && o.poses != sweeps.size())
+			throw core::Error(
+				o.rawlog + ": holds " + std::to_string(sweeps.size()) + " sweeps, but --poses is " +
+				std::to_string(o.poses));
+		std::vector<mrpt::poses::CPose2D> robotPoses;
+		for (const auto& s : sweeps) robotPoses.push_back(s.robotPose);
+		const size_t n = sweeps.empty() ? o.poses : sweeps.size();
+		report.perPose = eval::PerPoseEvaluation::compute(
+			w.tables, eval::TableCsv::readPerPose(o.perPose, n), robotPoses, o.eval);
+	}
+	std::cout << (o.json ? report.toJson() : report.toText());
+	return 0;
+}
+}  // namespace
+
+int WhiskerEvalApp::main(int argc, char** argv)
+{
+	CLI::App app{
+		"whisker-eval: score a whisker-map result against the true world. Tables are matched "
+		"one-to-one (Hungarian algorithm, least total centre distance, most matches first) "
+		"among pairs within the centre and yaw gates (yaw modulo 180 degrees); then precision, "
+		"recall, F1, count error (estimated - true), centre RMSE and mean absolute yaw error "
+		"over matched tables, and OSPA of the table centres. Definitions: doc/evaluation.md."};
+	Options o;
+	app.add_option("-w,--world", o.world, "True world .ini (the one simulated; doc/formats.md)")
+		->required();
+	app.add_option(
+		   "-m,--map", o.map,
+		   "Consolidated map CSV written by whisker-map (map_tables.csv: id,x,y,yaw_deg,length,"
+		   "width,leg_width,texture,existence,support)")
+		->required();
+	app.add_option(
+		"--per-pose", o.perPose,
+		"Per-pose MAP tables CSV (per_pose_tables.csv: pose,x,y,yaw_deg,length,width,"
+		"leg_width,texture,log_posterior): adds figures averaged over poses; needs --poses or "
+		"--rawlog for the number of poses (a pose that found nothing has no row)");
+	app.add_option(
+		"--rawlog", o.rawlog,
+		"The rawlog the map was built from: gives the number of poses and the robot positions "
+		"(for the per-pose 'local' figures) and adds the identifiability bound: tables touched "
+		"on >= 2 legs (a contact within 3 sigma_r + 1 cm of a leg) and recall on them");
+	app.add_option("--poses", o.poses, "Number of poses (sweeps), when --per-pose is given without --rawlog")
+		->check(CLI::PositiveNumber);
+	app.add_flag("--json", o.json, "Print one JSON object (fixed key order and format) instead of a table");
+	app.add_option(
+		   "--gate-distance", o.eval.gate_distance,
+		   "Largest centre distance (m) of a matched pair; a quarter of the paper table's 1 m length")
+		->check(CLI::PositiveNumber)
+		->capture_default_str();
+	app.add_option(
+		   "--gate-yaw-deg", o.eval.gate_yaw_deg,
+		   "Largest yaw difference (degrees, modulo 180) of a matched pair, in (0, 90]")
+		->check(CLI::Range(0.0, 90.0))
+		->capture_default_str();
+	app.add_option("--ospa-c", o.eval.ospa_c, "OSPA cut-off c (m): the cost of a missing or extra table")
+		->check(CLI::PositiveNumber)
+		->capture_default_str();
+	app.add_option("--ospa-p", o.eval.ospa_p, "OSPA order p (>= 1)")
+		->check(CLI::Range(1.0, 100.0))
+		->capture_default_str();
+	app.add_option(
+		   "--min-support", o.minSupport,
+		   "Ignore map objects merged from fewer than N per-pose MAP tables (1 keeps all)")
+		->capture_default_str();
+	app.add_option(
+		   "--local-radius", o.eval.local_radius,
+		   "Per-pose 'local' truth: tables whose centre is within this distance (m) of the "
+		   "robot (whisker reach 0.7 m + half a table's diagonal 0.6 m, rounded up)")
+		->check(CLI::PositiveNumber)
+		->capture_default_str();
+	try
+	{
+		app.parse(argc, argv);
+		return run(o);
+	}
+	catch (const CLI::ParseError& e)
+	{
+		return app.exit(e);
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << "whisker-eval: error: " << core::conciseMessage(e) << "\n";
+		return 1;
+	}
+}
+}  // namespace whiskermap::cli

@@ -1,0 +1,42 @@
+#pragma once
+#include <whiskermap/world/Table.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace whiskermap::eval
+{
+/** Strict readers of the table CSVs whisker-map writes (doc/evaluation.md): the header must
+ *  match exactly, every row has exactly its columns, every value is a finite number in range
+ *  (integers where counts or indices are). Errors are core::Error, one line naming the file
+ *  and line: "map_tables.csv: line 4: column 'x': 'abc' is not a number". */
+class TableCsv
+{
+   public:
+	static constexpr const char* MAP_HEADER =
+		"id,x,y,yaw_deg,length,width,leg_width,texture,existence,support";
+	static constexpr const char* PER_POSE_HEADER =
+		"pose,x,y,yaw_deg,length,width,leg_width,texture,log_posterior";
+
+	/** One object of the consolidated map. */
+	struct MapRow
+	{
+		long id = 0;
+		world::Table table;
+		double existence = 0;  ///< in [0, 1]
+		uint32_t support = 0;  ///< per-pose MAP tables merged into it
+	};
+
+	/** `map_tables.csv`. Ids must be distinct. */
+	static std::vector<MapRow> readMap(const std::string& path);
+
+	/** `per_pose_tables.csv`: element i holds the tables of pose i, for poses 0 .. poses-1
+	 *  (a pose index outside that range is an error naming its line). */
+	static std::vector<std::vector<world::Table>> readPerPose(
+		const std::string& path, size_t poses);
+
+	/** The tables of the rows with support >= minSupport, in row order. */
+	static std::vector<world::Table> supported(const std::vector<MapRow>& rows, uint32_t minSupport);
+};
+}  // namespace whiskermap::eval

@@ -1,0 +1,124 @@
+#include "Fixtures.h"
+
+#include <whiskermap/core/Error.h>
+#include <whiskermap/eval/TableCsv.h>
+
+#include <fstream>
+
+using namespace whiskermap;
+using eval::TableCsv;
+
+namespace
+{
+class TableCsvTest : public test::TempDirTest
+{
+   protected:
+	std::string write(const std::string& name, const std::string& text)
+	{
+		std::ofstream(path(name)) << text;
+		return path(name);
+	}
+	/** The core::Error message `f` throws (empty if none). */
+	template <class F>
+	static std::string errorOf(F f)
+	{
+		try
+		{
+			f();
+		}
+		catch (const core::Error& e)
+		{
+			return e.what();
+		}
+		return "";
+	}
+	/** The error of reading `text` as a map CSV. */
+	std::string mapError(const std::string& text)
+	{
+		return errorOf([&] { TableCsv::readMap(write("map.csv", text)); });
+	}
+	std::string map() const { return path("map.csv"); }
+};
+
+const std::string MAP_HEAD = std::string(TableCsv::MAP_HEADER) + "\n";
+const std::string POSE_HEAD = std::string(TableCsv::PER_POSE_HEADER) + "\n";
+}  // namespace
+
+TEST_F(TableCsvTest, ReadsAMap)
+{
+	const auto rows = TableCsv::readMap(write(
+		"map.csv", MAP_HEAD + "0,1.5,2,90,1,0.6,0.05,0.7,0.8,12\r\n7,-1,0.25,-30,1.2,0.5,0.04,0.3,1,1\n"));
+	ASSERT_EQ(rows.size(), 2u);
+	EXPECT_EQ(rows[0].id, 0);
+	EXPECT_EQ(rows[0].table.x, 1.5);
+	EXPECT_EQ(rows[0].table.y, 2.0);
+	EXPECT_NEAR(rows[0].table.yaw, M_PI_2, 1e-15);
+	EXPECT_EQ(rows[0].table.length, 1.0);
+	EXPECT_EQ(rows[0].table.width, 0.6);
+	EXPECT_EQ(rows[0].table.leg_width, 0.05);
+	EXPECT_EQ(rows[0].table.texture, 0.7);
+	EXPECT_EQ(rows[0].existence, 0.8);
+	EXPECT_EQ(rows[0].support, 12u);
+	EXPECT_EQ(rows[1].id, 7);
+	EXPECT_EQ(TableCsv::supported(rows, 1).size(), 2u);
+	ASSERT_EQ(TableCsv::supported(rows, 2).size(), 1u);
+	EXPECT_EQ(TableCsv::supported(rows, 2)[0].x, 1.5);
+	EXPECT_TRUE(TableCsv::supported(rows, 13).empty());
+	EXPECT_TRUE(TableCsv::readMap(write("header_only.csv", MAP_HEAD)).empty());
+}
+
+TEST_F(TableCsvTest, ReadsPerPoseTablesGroupedByPose)
+{
+	const auto perPose = TableCsv::readPerPose(
+		write("pp.csv", POSE_HEAD + "0,1,1,0,1,0.6,0.05,0.7,-10.5\n2,1,1,0,1,0.6,0.05,0.7,-3\n"
+								  "2,3,1,45,1,0.6,0.05,0.7,-3\n"),
+		4);
+	ASSERT_EQ(perPose.size(), 4u);
+	EXPECT_EQ(perPose[0].size(), 1u);
+	EXPECT_EQ(perPose[1].size(), 0u);
+	ASSERT_EQ(perPose[2].size(), 2u);
+	EXPECT_EQ(perPose[2][1].x, 3.0);
+	EXPECT_EQ(perPose[3].size(), 0u);
+}
+
+TEST_F(TableCsvTest, ErrorsNameFileAndLine)
+{
+	const std::string good = "0,1,1,0,1,0.6,0.05,0.7,0.5,3\n";
+	const std::string m = map();
+	EXPECT_EQ(
+		mapError("id,x,y,yaw,length,width,leg_width,texture,existence,support\n" + good),
+		m + ": line 1: bad header 'id,x,y,yaw,length,width,leg_width,texture,existence,support' "
+			"(expected '" + TableCsv::MAP_HEADER + "')");
+	EXPECT_EQ(mapError(""), m + ": empty file (expected the header '" + TableCsv::MAP_HEADER + "')");
+	// Data lines after the header -> the error after "<file>: ".
+	const std::vector<std::pair<std::string, std::string>> cases{
+		{good + "1,abc,1,0,1,0.6,0.05,0.7,0.5,3\n", "line 3: column 'x': 'abc' is not a number"},
+		{"1,1,nan,0,1,0.6,0.05,0.7,0.5,3\n", "line 2: column 'y': 'nan' is not finite"},
+		{"1,1,1,inf,1,0.6,0.05,0.7,0.5,3\n", "line 2: column 'yaw_deg': 'inf' is not finite"},
+		{"1,1,1,0,1,0.6,0.05,0.7,0.5\n", "line 2: expected 10 columns, got 9"},
+		{good + "1,1,1,0,1,0.6,0.05,0.7,0.5,3,\n", "line 3: expected 10 columns, got 11"},
+		{good + "\n", "line 3: expected 10 columns, got 0"},
+		{"1,1,1,0,1,0.6,0.05,0.7,0.5,\n", "line 2: column 'support': '' is not a number"},
+		{"1,1,1,0,1,0.6,0.05,0.7,0.5, 3\n", "line 2: column 'support': ' 3' is not a number"},
+		{"1,1,1,0,1,0.6,0.05,0.7,0.5,2.5\n", "line 2: column 'support': '2.5' is not a whole number"},
+		{"1,1,1,0,1,0.6,0.05,0.7,1.5,2\n", "line 2: column 'existence': '1.5' is out of range [0, 1]"},
+		{"1,1,1,0,0,0.6,0.05,0.7,1,2\n", "line 2: column 'length': '0' is out of range [1e-06, 10000]"},
+		{good + good, "line 3: duplicate id 0"},
+	};
+	for (const auto& [rows, error] : cases) EXPECT_EQ(mapError(MAP_HEAD + rows), m + ": " + error);
+
+	const auto missing = path("nowhere.csv");
+	EXPECT_EQ(errorOf([&] { TableCsv::readMap(missing); }), missing + ": no such file");
+}
+
+TEST_F(TableCsvTest, PerPoseErrors)
+{
+	const auto pp = write("pp.csv", POSE_HEAD + "0,1,1,0,1,0.6,0.05,0.7,-1\n3,1,1,0,1,0.6,0.05,0.7,-1\n");
+	EXPECT_EQ(errorOf([&] { TableCsv::readPerPose(pp, 3); }),
+		pp + ": line 3: pose 3 out of range (3 poses)");
+	const auto nan = write("nan.csv", POSE_HEAD + "0,1,1,0,1,0.6,0.05,0.7,NaN\n");
+	EXPECT_EQ(errorOf([&] { TableCsv::readPerPose(nan, 3); }),
+		nan + ": line 2: column 'log_posterior': 'NaN' is not finite");
+	// A map CSV is not a per-pose CSV.
+	EXPECT_THROW(TableCsv::readPerPose(write("map.csv", MAP_HEAD), 3), core::Error);
+}
