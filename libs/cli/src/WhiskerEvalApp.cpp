@@ -1,7 +1,7 @@
 #include <CLI/CLI.hpp>
 #include <whiskermap/cli/WhiskerEvalApp.h>
+#include <whiskermap/cli/runApp.h>
 #include <whiskermap/core/Error.h>
-#include <whiskermap/core/conciseMessage.h>
 #include <whiskermap/eval/EvalReport.h>
 #include <whiskermap/eval/TableCsv.h>
 #include <whiskermap/obs/RawlogReader.h>
@@ -111,19 +111,6 @@ int WhiskerEvalApp::main(int argc, char** argv)
 		   "robot (whisker reach 0.7 m + half a table's diagonal 0.6 m, rounded up)")
 		->check(CLI::PositiveNumber)
 		->capture_default_str();
-	try
-	{
-		app.parse(argc, argv);
-		return run(o);
-	}
-	catch (const CLI::ParseError& e)
-	{
-		return app.exit(e);
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << "whisker-eval: error: " << core::conciseMessage(e) << "\n";
-		return 1;
-	}
+	return runApp(app, argc, argv, "whisker-eval", [&] { return run(o); });
 }
 }  // namespace whiskermap::cli

@@ -10,9 +10,9 @@
 #include <mrpt/opengl/CSetOfLines.h>
 #include <whiskermap/cli/OutputDir.h>
 #include <whiskermap/cli/WhiskerMapApp.h>
+#include <whiskermap/cli/runApp.h>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/core/Error.h>
-#include <whiskermap/core/conciseMessage.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/maps/MapConfig.h>
 #include <whiskermap/maps/MapCsv.h>
@@ -24,7 +24,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <optional>
 
 namespace whiskermap::cli
@@ -285,19 +284,6 @@ int WhiskerMapApp::main(int argc, char** argv)
 		->check(CLI::NonNegativeNumber)
 		->capture_default_str();
 	app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
-	try
-	{
-		app.parse(argc, argv);
-		return run(o);
-	}
-	catch (const CLI::ParseError& e)
-	{
-		return app.exit(e);
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << "whisker-map: error: " << core::conciseMessage(e) << "\n";
-		return 1;
-	}
+	return runApp(app, argc, argv, "whisker-map", [&] { return run(o); });
 }
 }  // namespace whiskermap::cli

@@ -1,12 +1,12 @@
 #include <CLI/CLI.hpp>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/core/Error.h>
-#include <whiskermap/core/conciseMessage.h>
 #include <whiskermap/render/TopDownImage.h>
 #include <whiskermap/world/NoisePreset.h>
 #include <whiskermap/world/RawlogWriter.h>
 #include <whiskermap/world/Trajectory.h>
 #include <whiskermap/cli/WhiskerSimApp.h>
+#include <whiskermap/cli/runApp.h>
 #include <whiskermap/world/WhiskerSimulator.h>
 
 #include <cmath>
@@ -151,19 +151,6 @@ int WhiskerSimApp::main(int argc, char** argv)
 	app.add_option("-o,--out", o.out, "Output rawlog path")->required();
 	app.add_option("--png", o.png, "Also draw the world, poses and contacts into this PNG");
 	app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
-	try
-	{
-		app.parse(argc, argv);
-		return run(o);
-	}
-	catch (const CLI::ParseError& e)
-	{
-		return app.exit(e);
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << "whisker-sim: error: " << core::conciseMessage(e) << "\n";
-		return 1;
-	}
+	return runApp(app, argc, argv, "whisker-sim", [&] { return run(o); });
 }
 }  // namespace whiskermap::cli
