@@ -13,6 +13,7 @@
 #include <whiskermap/cli/runApp.h>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/core/Error.h>
+#include <whiskermap/eval/EvalReport.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/maps/MapConfig.h>
 #include <whiskermap/maps/MapCsv.h>
@@ -154,9 +155,28 @@ void writeSimpleMap(const obs::RawlogReader::Contents& rawlog, const std::string
 	if (!sm.saveToFile(path)) throw core::Error(path + ": cannot write simple map");
 }
 
+/** The evaluation against ground truth (whisker-eval's figures, doc/evaluation.md) of the
+ *  consolidated map's objects with enough support and of the per-pose MAPs. */
+eval::EvalReport evaluate(
+	const world::World& w, const maps::CHierarchicalObjectMap& map, const obs::RawlogReader::Contents& rawlog)
+{
+	eval::EvalReport r;
+	std::vector<world::Table> estimated;
+	for (const auto& obj : map.objects())
+		if (obj.support >= map.likelihoodOptions.min_support) estimated.push_back(obj.table);
+	r.map = eval::MapEvaluation::compute(w.tables, estimated, r.options);
+	std::vector<std::vector<world::Table>> perPose;
+	std::vector<mrpt::poses::CPose2D> poses;
+	for (const auto& p : map.poseRecords()) perPose.push_back(p.tables), poses.push_back(p.pose);
+	r.perPose = eval::PerPoseEvaluation::compute(w.tables, perPose, poses, r.options);
+	r.identifiability =
+		eval::Identifiability::of(w, rawlog.sweeps, eval::Identifiability::defaultGate(rawlog.sweeps));
+	return r;
+}
+
 void writeSummary(
 	const std::string& path, const Options& o, const maps::CHierarchicalObjectMap& map,
-	const std::vector<double>& ms)
+	const std::vector<double>& ms, const std::optional<eval::EvalReport>& metrics)
 {
 	std::ofstream f(path);
 	const auto& poses = map.poseRecords();
@@ -184,8 +204,16 @@ void writeSummary(
 	std::snprintf(buf, sizeof(buf), "  \"time_per_pose_ms\": {\"median\": %.4f, \"p95\": %.4f},\n",
 				  percentile(ms, 0.5), percentile(ms, 0.95));
 	f << buf;
-	std::snprintf(buf, sizeof(buf), "  \"proposals_per_second\": %.0f\n", totalMs > 0 ? proposals / (totalMs / 1000) : 0.0);
-	f << buf << "}\n";
+	std::snprintf(buf, sizeof(buf), "  \"proposals_per_second\": %.0f", totalMs > 0 ? proposals / (totalMs / 1000) : 0.0);
+	f << buf;
+	if (metrics)
+	{
+		std::string j = metrics->toJson();  // indent the nested object
+		for (size_t p = j.find('\n'); p != std::string::npos && p + 1 < j.size(); p = j.find('\n', p + 1))
+			j.insert(p + 1, "  ");
+		f << ",\n  \"metrics\": " << j.substr(0, j.find_last_not_of('\n') + 1);
+	}
+	f << "\n}\n";
 	if (!f) throw core::Error(path + ": write failed");
 }
 
@@ -254,8 +282,15 @@ int run(Options& o)
 	drawMap(*map, w, out.path("map.png"));
 	writeScene(*map, out.path("map.3Dscene"));
 	writeSimpleMap(rawlog, out.path("map.simplemap"));
-	writeSummary(out.path("summary.json"), o, *map, ms);
+	std::optional<eval::EvalReport> metrics;
+	if (w)
+	{
+		metrics = evaluate(*w, *map, rawlog);
+		std::ofstream(out.path("metrics.json")) << metrics->toJson();
+	}
+	writeSummary(out.path("summary.json"), o, *map, ms, metrics);
 	out.commit();
+	if (metrics && !o.quiet) std::printf("%s", metrics->toText().c_str());
 	if (!o.quiet)
 		std::printf("whisker-map: %zu sweeps -> %s (%s); median %.3f ms per sweep\n", n,
 					o.outdir.c_str(), map->asString().c_str(), percentile(ms, 0.5));
@@ -275,7 +310,9 @@ int WhiskerMapApp::main(int argc, char** argv)
 	app.add_option("-c,--config", o.config, "CMultiMetricMap .ini (default: the shipped config/whisker-map.ini)");
 	app.add_option("-o,--out", o.outdir, "Output folder (created; files in it are replaced only when the run succeeds)")->required();
 	app.add_option("--seed", o.seed, "Override the map's base seed (insertOpts seed); same seed, same maps");
-	app.add_option("--world", o.world, "Ground-truth world .ini: drawn in the pictures");
+	app.add_option("--world", o.world,
+				   "Ground-truth world .ini: drawn in the pictures, and the maps are evaluated against it "
+				   "(metrics.json, and \"metrics\" in summary.json; doc/evaluation.md)");
 	app.add_option("--snapshot-pose", o.snapshotPose,
 				   "Also draw the blackboard of this sweep (0-based) at a hot temperature and its MAP "
 				   "(the paper's figs. 1-2)");
