@@ -7,7 +7,7 @@ map=$1 sim=$2 src=$3 work=$4
 rm -rf "$work"; mkdir -p "$work"
 data="$src/datasets/paper_arena/default.rawlog"
 "$map" -q -i "$data" -o "$work/a" --world "$src/config/worlds/paper_arena.ini"
-for f in per_pose_tables.csv map_tables.csv montage.png map.png map.3Dscene map.simplemap summary.json; do
+for f in per_pose_tables.csv map_tables.csv montage.png map.png map.3Dscene map.bt map.simplemap summary.json metrics.json; do
   [[ -s "$work/a/$f" ]] || { echo "FAIL: $f missing or empty"; exit 1; }
 done
 [[ "$(head -1 "$work/a/per_pose_tables.csv")" == "pose,x,y,yaw_deg,length,width,leg_width,texture,log_posterior" ]] || { echo "FAIL: per_pose header"; exit 1; }
@@ -30,3 +30,11 @@ echo "ok: another seed, other maps"
 "$map" -q -i "$work/sf.rawlog" -o "$work/d"
 cmp "$work/a/per_pose_tables.csv" "$work/d/per_pose_tables.csv"
 echo "ok: the action/sensory-frame layout gives the same maps"
+
+# The OctoMap export is read by OctoMap's own tool; a damaged copy is refused by it.
+command -v convert_octree >/dev/null || { echo "convert_octree not installed (scripts/install-deps.sh --tools)"; exit 1; }
+convert_octree "$work/a/map.bt" "$work/map.ot" >/dev/null
+[[ -s "$work/map.ot" ]] || { echo "FAIL: convert_octree wrote nothing"; exit 1; }
+head -c 200 "$work/a/map.bt" > "$work/cut.bt"
+if convert_octree "$work/cut.bt" "$work/cut.ot" >/dev/null 2>&1; then echo "FAIL: convert_octree accepted a truncated octree"; exit 1; fi
+echo "ok: stock convert_octree reads map.bt"

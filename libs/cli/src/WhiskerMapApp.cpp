@@ -18,6 +18,7 @@
 #include <whiskermap/maps/MapConfig.h>
 #include <whiskermap/maps/MapCsv.h>
 #include <whiskermap/obs/RawlogReader.h>
+#include <whiskermap/render/OcTreeExport.h>
 #include <whiskermap/render/TopDownImage.h>
 
 #include <algorithm>
@@ -161,10 +162,7 @@ eval::EvalReport evaluate(
 	const world::World& w, const maps::CHierarchicalObjectMap& map, const obs::RawlogReader::Contents& rawlog)
 {
 	eval::EvalReport r;
-	std::vector<world::Table> estimated;
-	for (const auto& obj : map.objects())
-		if (obj.support >= map.likelihoodOptions.min_support) estimated.push_back(obj.table);
-	r.map = eval::MapEvaluation::compute(w.tables, estimated, r.options);
+	r.map = eval::MapEvaluation::compute(w.tables, map.supportedTables(), r.options);
 	std::vector<std::vector<world::Table>> perPose;
 	std::vector<mrpt::poses::CPose2D> poses;
 	for (const auto& p : map.poseRecords()) perPose.push_back(p.tables), poses.push_back(p.pose);
@@ -180,9 +178,9 @@ void writeSummary(
 {
 	std::ofstream f(path);
 	const auto& poses = map.poseRecords();
-	size_t tables = 0, maxTables = 0, supported = 0;
+	size_t tables = 0, maxTables = 0;
+	const size_t supported = map.supportedTables().size();
 	for (const auto& p : poses) tables += p.tables.size(), maxTables = std::max(maxTables, p.tables.size());
-	for (const auto& obj : map.objects()) supported += obj.support >= map.likelihoodOptions.min_support;
 	double totalMs = 0;
 	uint64_t proposals = 0;
 	for (double t : ms) totalMs += t;
@@ -282,6 +280,8 @@ int run(Options& o)
 	drawMap(*map, w, out.path("map.png"));
 	writeScene(*map, out.path("map.3Dscene"));
 	writeSimpleMap(rawlog, out.path("map.simplemap"));
+	const auto& ro = map->renderOptions;
+	render::OcTreeExport::write(map->supportedTables(), {ro.octomap_resolution, ro.table_height, ro.top_thickness}, out.path("map.bt"));
 	std::optional<eval::EvalReport> metrics;
 	if (w)
 	{
@@ -304,7 +304,7 @@ int WhiskerMapApp::main(int argc, char** argv)
 		"whisker-map: map tables from whisker contacts. Runs a CHierarchicalObjectMap (Fox & "
 		"Prescott's hierarchical model and annealed blackboard sampler) over every whisker sweep "
 		"of a rawlog (either MRPT layout) and writes, in OUTDIR: per_pose_tables.csv, "
-		"map_tables.csv, montage.png, map.png, map.3Dscene, map.simplemap, summary.json (doc/outputs.md)."};
+		"map_tables.csv, montage.png, map.png, map.3Dscene, map.bt (OctoMap), map.simplemap, summary.json (doc/outputs.md)."};
 	Options o;
 	app.add_option("-i,--input", o.input, "Input rawlog with CObservationWhiskerContacts sweeps")->required();
 	app.add_option("-c,--config", o.config, "CMultiMetricMap .ini (default: the shipped config/whisker-map.ini)");

@@ -128,7 +128,10 @@ void CHierarchicalObjectMap::TMapDefinition::loadFromConfigFile_map_specific(
 {
 	readSection(c, prefix + "_creationOpts", [&](core::IniSection& sec) {
 		for (const char* k : MRPT_GENERIC_KEYS) sec.boolean(k, true);  // MRPT reads these
-		renderOptions.table_height = sec.number("table_height", renderOptions.table_height, 0.01, 10);
+		auto& r = renderOptions;
+		r.table_height = sec.number("table_height", r.table_height, 0.01, 10);
+		r.top_thickness = sec.number("top_thickness", r.top_thickness, 0.001, r.table_height);
+		r.octomap_resolution = sec.number("octomap_resolution", r.octomap_resolution, 0.001, 1);
 	});
 	insertionOptions.loadFromConfigFile(c, prefix + "_insertOpts");
 	likelihoodOptions.loadFromConfigFile(c, prefix + "_likelihoodOpts");
@@ -153,7 +156,8 @@ void CHierarchicalObjectMap::TMapDefinition::loadFromConfigFile_map_specific(
 
 void CHierarchicalObjectMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out) const
 {
-	out << "table_height=" << renderOptions.table_height << "\n";
+	out << "table_height=" << renderOptions.table_height << "\ntop_thickness=" << renderOptions.top_thickness
+		<< "\noctomap_resolution=" << renderOptions.octomap_resolution << "\n";
 	insertionOptions.dumpToTextStream(out);
 	likelihoodOptions.dumpToTextStream(out);
 }
@@ -208,14 +212,20 @@ world::Table CHierarchicalObjectMap::toWorldTable(const model::Table& t) const
 		t.leg_width, t.texture};
 }
 
+std::vector<world::Table> CHierarchicalObjectMap::supportedTables() const
+{
+	std::vector<world::Table> tables;
+	for (const auto& o : objects())
+		if (o.support >= likelihoodOptions.min_support) tables.push_back(o.table);
+	return tables;
+}
+
 std::vector<world::Obstacle> CHierarchicalObjectMap::mappedLegs() const
 {
 	std::vector<world::Obstacle> legs;
-	for (size_t i = 0; i < objects().size(); i++)
-	{
-		if (objects()[i].support < likelihoodOptions.min_support) continue;
-		for (int k = 0; k < 4; k++) legs.push_back(objects()[i].table.leg(k, static_cast<int>(i)));
-	}
+	const auto tables = supportedTables();
+	for (size_t i = 0; i < tables.size(); i++)
+		for (int k = 0; k < 4; k++) legs.push_back(tables[i].leg(k, static_cast<int>(i)));
 	return legs;
 }
 
@@ -288,8 +298,7 @@ void CHierarchicalObjectMap::saveMetricMapRepresentationToFile(const std::string
 std::string CHierarchicalObjectMap::asString() const
 {
 	std::ostringstream s;
-	size_t supported = 0;
-	for (const auto& o : objects()) supported += o.support >= likelihoodOptions.min_support;
+	const size_t supported = supportedTables().size();
 	s << "CHierarchicalObjectMap: " << m_poses.size() << " sweeps inserted, " << m_shapelets.size()
 	  << " shapelets, " << objects().size() << " objects (" << supported << " with support >= "
 	  << likelihoodOptions.min_support << ")";
@@ -320,8 +329,8 @@ void CHierarchicalObjectMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& s
 				obj->insert(leg);
 			}
 		auto top = CBox::Create(
-			mrpt::math::TPoint3D(-t.length / 2 - lw, -t.width / 2 - lw, h),
-			mrpt::math::TPoint3D(t.length / 2 + lw, t.width / 2 + lw, h + 0.03));
+			mrpt::math::TPoint3D(-t.length / 2 - lw, -t.width / 2 - lw, h - renderOptions.top_thickness),
+			mrpt::math::TPoint3D(t.length / 2 + lw, t.width / 2 + lw, h));
 		top->setColor(0.8f, 0.6f, 0.4f, 0.5f * a);
 		top->setName("top");
 		obj->insert(top);
@@ -372,7 +381,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	out.WriteAs<uint32_t>(insertionOptions.memory_size);
 	out << insertionOptions.seed << c.merge_distance << c.merge_angle << c.evidence_margin;
 	out << likelihoodOptions.sweep.sigma_contact << likelihoodOptions.sweep.p_unexplained
-		<< likelihoodOptions.sweep.p_miss << likelihoodOptions.min_support << renderOptions.table_height;
+		<< likelihoodOptions.sweep.p_miss << likelihoodOptions.min_support << renderOptions.table_height
+		<< renderOptions.top_thickness << renderOptions.octomap_resolution;
 	// Content.
 	out.WriteAs<uint32_t>(m_poses.size());
 	for (const auto& p : m_poses)
@@ -408,7 +418,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 			in >> insertionOptions.seed >> c.merge_distance >> c.merge_angle >> c.evidence_margin;
 			in >> likelihoodOptions.sweep.sigma_contact >> likelihoodOptions.sweep.p_unexplained >>
 				likelihoodOptions.sweep.p_miss >> likelihoodOptions.min_support >>
-				renderOptions.table_height;
+				renderOptions.table_height >> renderOptions.top_thickness >> renderOptions.octomap_resolution;
 			m_poses.resize(in.ReadAs<uint32_t>());
 			for (auto& p : m_poses)
 			{

@@ -50,10 +50,12 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 		void dumpToTextStream(std::ostream& out) const override;
 	};
 
-	/** [<prefix>_creationOpts] (besides MRPT's generic keys): drawing. */
+	/** [<prefix>_creationOpts] (besides MRPT's generic keys): 3-D drawing and exports. */
 	struct TRenderOptions
 	{
 		double table_height = 0.7;  ///< metres, for 3-D views and exports
+		double top_thickness = 0.03;  ///< table-top slab, metres
+		double octomap_resolution = 0.02;  ///< voxel edge of the OctoMap export, metres
 	};
 
 	CHierarchicalObjectMap();
@@ -83,7 +85,10 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 
 	/** A model table as a full table of the known size. */
 	world::Table toWorldTable(const model::Table& t) const;
-	/** Legs of the objects with at least likelihoodOptions.min_support, as solids. */
+	/** The tables of the objects with support >= likelihoodOptions.min_support: the map as
+	 *  used for likelihoods, pictures, exports and evaluation. */
+	std::vector<world::Table> supportedTables() const;
+	/** Legs of supportedTables(), as solids. */
 	std::vector<world::Obstacle> mappedLegs() const;
 
 	// See base class docs
