@@ -89,6 +89,7 @@ void CHierarchicalObjectMap::TInsertionOptions::loadFromConfigFile(
 	readSection(c, s, [&](core::IniSection& sec) {
 		memory_size = static_cast<size_t>(sec.integer("memory_size", memory_size, 1, 1000));
 		seed = static_cast<uint64_t>(sec.integer("seed", static_cast<long>(seed), 0, 1L << 53));
+		use_sensor_noise = sec.boolean("use_sensor_noise", use_sensor_noise);
 		auto& m = consolidation;
 		m.merge_distance = sec.number("merge_distance", m.merge_distance, 0, 100);
 		m.merge_angle = core::deg2rad(sec.number("merge_angle_deg", core::rad2deg(m.merge_angle), 0, 90));
@@ -98,7 +99,7 @@ void CHierarchicalObjectMap::TInsertionOptions::loadFromConfigFile(
 
 void CHierarchicalObjectMap::TInsertionOptions::dumpToTextStream(std::ostream& out) const
 {
-	out << "memory_size=" << memory_size << "\nseed=" << seed
+	out << "memory_size=" << memory_size << "\nseed=" << seed << "\nuse_sensor_noise=" << use_sensor_noise
 		<< "\nmerge_distance=" << consolidation.merge_distance
 		<< "\nmerge_angle_deg=" << core::rad2deg(consolidation.merge_angle)
 		<< "\nevidence_margin=" << consolidation.evidence_margin << "\n";
@@ -251,7 +252,12 @@ bool CHierarchicalObjectMap::internal_insertObservation(
 	const mrpt::poses::CPose2D pose = robotPose ? mrpt::poses::CPose2D(*robotPose) : mrpt::poses::CPose2D();
 	const auto shapelets = sweep->toShapelets(pose);
 
-	if (!m_sampler) m_sampler = std::make_unique<inference::BlackboardSampler>(modelParams, samplerParams);
+	const auto model = modelFor(sweep->noise);
+	if (!m_sampler || !(model == m_samplerModel))
+	{
+		m_sampler = std::make_unique<inference::BlackboardSampler>(model, samplerParams);
+		m_samplerModel = model;
+	}
 	if (m_memory.capacity() != insertionOptions.memory_size)
 		m_memory = inference::ShapeletMemory(insertionOptions.memory_size);
 	m_consolidator.setOptions(insertionOptions.consolidation);
@@ -272,6 +278,20 @@ bool CHierarchicalObjectMap::internal_insertObservation(
 	m_shapelets.insert(m_shapelets.end(), shapelets.begin(), shapelets.end());
 	m_poses.push_back(std::move(rec));
 	return true;
+}
+
+model::ModelParams CHierarchicalObjectMap::modelFor(const obs::TSensorNoise& noise) const
+{
+	model::ModelParams m = modelParams;
+	if (!insertionOptions.use_sensor_noise) return m;
+	if (noise.sigma_r > m.sigma_r)
+	{
+		m.parent_gate *= noise.sigma_r / m.sigma_r;
+		m.sigma_r = noise.sigma_r;
+	}
+	m.sigma_theta = std::max(m.sigma_theta, noise.sigma_phi);
+	m.sigma_tau = std::max(m.sigma_tau, noise.sigma_tau);
+	return m;
 }
 
 bool CHierarchicalObjectMap::internal_canComputeObservationLikelihood(
@@ -379,7 +399,7 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 		<< m.leg_width << m.texture << m.parent_gate;
 	const auto& c = insertionOptions.consolidation;
 	out.WriteAs<uint32_t>(insertionOptions.memory_size);
-	out << insertionOptions.seed << c.merge_distance << c.merge_angle << c.evidence_margin;
+	out << insertionOptions.seed << insertionOptions.use_sensor_noise << c.merge_distance << c.merge_angle << c.evidence_margin;
 	out << likelihoodOptions.sweep.sigma_contact << likelihoodOptions.sweep.p_unexplained
 		<< likelihoodOptions.sweep.p_miss << likelihoodOptions.min_support << renderOptions.table_height
 		<< renderOptions.top_thickness << renderOptions.octomap_resolution;
@@ -415,7 +435,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 				m.leg_width >> m.texture >> m.parent_gate;
 			auto& c = insertionOptions.consolidation;
 			insertionOptions.memory_size = in.ReadAs<uint32_t>();
-			in >> insertionOptions.seed >> c.merge_distance >> c.merge_angle >> c.evidence_margin;
+			in >> insertionOptions.seed >> insertionOptions.use_sensor_noise >> c.merge_distance >> c.merge_angle >> c.evidence_margin;
 			in >> likelihoodOptions.sweep.sigma_contact >> likelihoodOptions.sweep.p_unexplained >>
 				likelihoodOptions.sweep.p_miss >> likelihoodOptions.min_support >>
 				renderOptions.table_height >> renderOptions.top_thickness >> renderOptions.octomap_resolution;

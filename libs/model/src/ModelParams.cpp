@@ -1,6 +1,7 @@
 #include <whiskermap/model/ModelParams.h>
 
 #include <cmath>
+#include <tuple>
 
 namespace whiskermap::model
 {
@@ -28,5 +29,15 @@ ModelParams ModelParams::fromIni(core::IniSection& sec)
 	if (p.leg_width >= std::min(p.table_length, p.table_width))
 		sec.fail("leg_width", "must be smaller than table_length and table_width");
 	return p;
+}
+
+bool ModelParams::operator==(const ModelParams& o) const
+{
+	auto tie = [](const ModelParams& p) {
+		return std::tie(
+			p.sigma_r, p.sigma_theta, p.sigma_w, p.sigma_tau, p.c_T, p.c_L, p.c_S, p.alpha_L, p.alpha_S,
+			p.epsilon, p.delta, p.table_length, p.table_width, p.leg_width, p.texture, p.parent_gate);
+	};
+	return tie(*this) == tie(o);
 }
 }  // namespace whiskermap::model

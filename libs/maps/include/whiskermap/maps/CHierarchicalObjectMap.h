@@ -36,6 +36,10 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	{
 		size_t memory_size = 7;  ///< shapelets in working memory (paper: 7)
 		uint64_t seed = 1;  ///< step k uses a seed derived from (seed, k)
+		/** Raise the model's sigma_r, sigma_theta, sigma_tau to the noise each sweep reports
+		 *  when it is larger (the paper's eq. 7 uses the sensor noise), scaling parent_gate
+		 *  with sigma_r. */
+		bool use_sensor_noise = true;
 		TableConsolidator::TOptions consolidation;
 		void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
 		void dumpToTextStream(std::ostream& out) const override;
@@ -116,8 +120,12 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	std::array<uint64_t, inference::MOVE_COUNT> m_proposed{}, m_accepted{};
 	inference::StepResult m_lastStep;
 	int m_snapshotTemperature = -1;
-	/** Built on first insertion from modelParams/samplerParams (its buffers are reused). */
+	/** Built from modelParams/samplerParams (adapted to the sweep's noise) when first needed
+	 *  or when that model changes; its buffers are reused across steps. */
 	std::unique_ptr<inference::BlackboardSampler> m_sampler;
+	model::ModelParams m_samplerModel;  ///< the model m_sampler was built with
+	/** The model a sweep with this noise is scored with. */
+	model::ModelParams modelFor(const obs::TSensorNoise& noise) const;
 
 	MAP_DEFINITION_START(CHierarchicalObjectMap)
 	TInsertionOptions insertionOptions;

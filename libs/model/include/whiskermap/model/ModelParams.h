@@ -35,5 +35,7 @@ struct ModelParams
 
 	/** Reads every key of `sec` (all required) and calls sec.finish(); throws core::Error. */
 	static ModelParams fromIni(core::IniSection& sec);
+
+	bool operator==(const ModelParams& o) const;
 };
 }  // namespace whiskermap::model
