@@ -1,4 +1,6 @@
+#include <fcntl.h>
 #include <octomap/OcTree.h>
+#include <unistd.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/render/OcTreeExport.h>
 
@@ -7,6 +9,30 @@
 
 namespace whiskermap::render
 {
+namespace
+{
+/** OctoMap's writer prints progress on stderr ("Writing N nodes ... done."): silence it
+ *  for the scope, so apps print only what they mean to. */
+class QuietStderr
+{
+   public:
+	QuietStderr() : m_saved(::dup(STDERR_FILENO))
+	{
+		const int null = ::open("/dev/null", O_WRONLY);
+		if (null >= 0) ::dup2(null, STDERR_FILENO), ::close(null);
+	}
+	~QuietStderr()
+	{
+		if (m_saved >= 0) ::dup2(m_saved, STDERR_FILENO), ::close(m_saved);
+	}
+	QuietStderr(const QuietStderr&) = delete;
+	QuietStderr& operator=(const QuietStderr&) = delete;
+
+   private:
+	int m_saved;
+};
+}  // namespace
+
 size_t OcTreeExport::write(const std::vector<world::Table>& tables, const TOptions& o, const std::string& path)
 {
 	octomap::OcTree tree(o.resolution);
@@ -41,7 +67,12 @@ size_t OcTreeExport::write(const std::vector<world::Table>& tables, const TOptio
 	}
 	tree.updateInnerOccupancy();
 	const std::string tmp = path + ".tmp";
-	if (!tree.writeBinary(tmp)) throw core::Error(path + ": cannot write octree");
+	bool written;
+	{
+		QuietStderr quiet;
+		written = tree.writeBinary(tmp);
+	}
+	if (!written) throw core::Error(path + ": cannot write octree");
 	std::filesystem::rename(tmp, path);
 	return occupied;
 }
