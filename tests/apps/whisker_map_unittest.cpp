@@ -3,7 +3,12 @@
 #include <gtest/gtest.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/maps/CMultiMetricMap.h>
 #include <whiskermap/cli/WhiskerMapApp.h>
+#include <whiskermap/maps/CHierarchicalObjectMap.h>
+#include <whiskermap/maps/MapConfig.h>
+#include <whiskermap/maps/MapCsv.h>
+#include <whiskermap/obs/RawlogReader.h>
 
 #include <filesystem>
 #include <fstream>
@@ -11,18 +16,51 @@
 
 namespace fs = std::filesystem;
 
-TEST(WhiskerMap, SceneReloadsWithTheSupportedTables)
+namespace
 {
-	const std::string src = WHISKERMAP_SOURCE_DIR;
-	const auto out = (fs::temp_directory_path() / "whiskermap_scene_test").string();
-	fs::remove_all(out);
-	std::vector<std::string> args = {"whisker-map", "-q", "-i", src + "/datasets/paper_arena/noiseless.rawlog", "-o", out};
+const std::string SRC = WHISKERMAP_SOURCE_DIR;
+
+int runWhiskerMap(std::vector<std::string> args)
+{
+	args.insert(args.begin(), "whisker-map");
 	std::vector<char*> argv;
 	for (auto& a : args) argv.push_back(a.data());
-	ASSERT_EQ(whiskermap::cli::WhiskerMapApp::main(static_cast<int>(argv.size()), argv.data()), 0);
+	return whiskermap::cli::WhiskerMapApp::main(static_cast<int>(argv.size()), argv.data());
+}
 
-	std::ifstream summary(out + "/summary.json");
-	const std::string text((std::istreambuf_iterator<char>(summary)), {});
+std::string slurp(const std::string& path)
+{
+	std::ifstream f(path);
+	return std::string((std::istreambuf_iterator<char>(f)), {});
+}
+}  // namespace
+
+TEST(WhiskerMap, StreamingParallelRunEqualsTheMapLibrary)
+{
+	// whisker-map streams the rawlog and solves steps on 2 threads; the map class used
+	// directly (insertObservation, in order) must give the very same per-pose and map CSVs.
+	const std::string data = SRC + "/datasets/paper_arena/default.rawlog";
+	const auto out = (fs::temp_directory_path() / "whiskermap_stream_test").string();
+	fs::remove_all(out);
+	ASSERT_EQ(runWhiskerMap({"-q", "-j", "2", "-i", data, "-o", out}), 0);
+
+	mrpt::maps::CMultiMetricMap mm(whiskermap::maps::MapConfig::load(SRC + "/config/whisker-map.ini"));
+	auto map = mm.mapByClass<whiskermap::maps::CHierarchicalObjectMap>();
+	for (const auto& s : whiskermap::obs::RawlogReader::read(data).sweeps)
+		mm.insertObservation(*s.obs, mrpt::poses::CPose3D(s.robotPose));
+	map->saveMetricMapRepresentationToFile(out + "/lib");
+	EXPECT_EQ(slurp(out + "/per_pose_tables.csv"), slurp(out + "/lib_per_pose_tables.csv"));
+	EXPECT_EQ(slurp(out + "/map_tables.csv"), slurp(out + "/lib_map_tables.csv"));
+	EXPECT_GT(slurp(out + "/per_pose_tables.csv").size(), 1000u);
+	fs::remove_all(out);
+}
+
+TEST(WhiskerMap, SceneReloadsWithTheSupportedTables)
+{
+	const auto out = (fs::temp_directory_path() / "whiskermap_scene_test").string();
+	fs::remove_all(out);
+	ASSERT_EQ(runWhiskerMap({"-q", "-i", SRC + "/datasets/paper_arena/noiseless.rawlog", "-o", out}), 0);
+	const std::string text = slurp(out + "/summary.json");
 	std::smatch m;
 	ASSERT_TRUE(std::regex_search(text, m, std::regex("\"map_objects_supported\": (\\d+)")));
 	const size_t supported = std::stoul(m[1]);
@@ -44,7 +82,7 @@ TEST(WhiskerMap, SceneReloadsWithTheSupportedTables)
 		}
 	EXPECT_EQ(tables, supported);
 	EXPECT_EQ(legs, 4 * supported);
-	EXPECT_TRUE(set->getByName("shapelets"));
+	EXPECT_TRUE(scene.getByName("contacts"));
 	EXPECT_TRUE(scene.getByName("robot_path"));
 	fs::remove_all(out);
 }

@@ -22,7 +22,8 @@ struct Options
 {
 	std::string world, trajectory = "paper-grid", path, robot = "scratchbot", noise = "default";
 	std::string format = "obs", out, png;
-	int grid = 10;
+	int grid = 10, repeat = 1;
+	std::vector<int> tiles{1, 1};
 	uint64_t seed = 1;
 	bool quiet = false;
 };
@@ -48,11 +49,12 @@ struct ContactStatistic
 
 int run(const Options& o)
 {
-	const World w = World::load(o.world);
+	const World w = World::load(o.world).tiled(o.tiles[0], o.tiles[1]);
 	const Robot robot = Robot::load(core::ConfigPaths::resolve(o.robot, "robots"));
 	const auto noise = NoisePreset::load(o.noise);
-	const auto poses = o.path.empty() ? Trajectory::paperGrid(w, o.grid)
-									  : Trajectory::readPathFile(o.path);
+	const auto once = o.path.empty() ? Trajectory::paperGrid(w, o.grid) : Trajectory::readPathFile(o.path);
+	std::vector<mrpt::poses::CPose2D> poses;
+	for (int k = 0; k < o.repeat; k++) poses.insert(poses.end(), once.begin(), once.end());
 	WhiskerSimulator sim(w, robot, noise, o.seed);
 
 	// Fixed, synthetic clock: one sweep per second from a fixed epoch (reproducible bytes).
@@ -132,6 +134,13 @@ int WhiskerSimApp::main(int argc, char** argv)
 		->capture_default_str();
 	app.add_option("--grid", o.grid, "N for paper-grid (default 10: 400 poses)")
 		->check(CLI::Range(1, 1000))
+		->capture_default_str();
+	app.add_option("--tiles", o.tiles, "NX NY: repeat the world NX x NY times (same density; for scaling runs)")
+		->expected(2)
+		->check(CLI::Range(1, 100))
+		->capture_default_str();
+	app.add_option("--repeat", o.repeat, "Run the trajectory this many times (new noise each time)")
+		->check(CLI::Range(1, 100000))
 		->capture_default_str();
 	app.add_option("--path", o.path, "Pose file, one 'x y yaw_deg' per line (replaces --trajectory)")
 		->check(CLI::ExistingFile);

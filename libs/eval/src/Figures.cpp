@@ -1,4 +1,5 @@
 #include <whiskermap/eval/Figures.h>
+#include <whiskermap/eval/FiguresMean.h>
 
 namespace whiskermap::eval
 {
@@ -21,28 +22,34 @@ Figures Figures::of(
 	return f;
 }
 
+void FiguresMean::add(const Figures& f)
+{
+	m_sum.precision += f.precision;
+	m_sum.recall += f.recall;
+	m_sum.f1 += f.f1;
+	m_sum.count_error += f.count_error;
+	m_sum.ospa += f.ospa;
+	m_n++;
+	if (std::isnan(f.rmse_m)) return;
+	m_rmse += f.rmse_m;
+	m_yaw += f.yaw_err_deg;
+	m_defined++;
+}
+
+Figures FiguresMean::result() const
+{
+	if (!m_n) return {};
+	Figures m = m_sum;
+	const double n = double(m_n);
+	m.precision /= n, m.recall /= n, m.f1 /= n, m.count_error /= n, m.ospa /= n;
+	if (m_defined) m.rmse_m = m_rmse / m_defined, m.yaw_err_deg = m_yaw / m_defined;
+	return m;
+}
+
 Figures Figures::mean(const std::vector<Figures>& items)
 {
-	if (items.empty()) return {};
-	Figures m;
-	m.precision = m.recall = m.f1 = m.ospa = 0;
-	double rmse = 0, yaw = 0;
-	size_t defined = 0;
-	for (const auto& f : items)
-	{
-		m.precision += f.precision;
-		m.recall += f.recall;
-		m.f1 += f.f1;
-		m.count_error += f.count_error;
-		m.ospa += f.ospa;
-		if (std::isnan(f.rmse_m)) continue;
-		rmse += f.rmse_m;
-		yaw += f.yaw_err_deg;
-		defined++;
-	}
-	const double n = double(items.size());
-	m.precision /= n, m.recall /= n, m.f1 /= n, m.count_error /= n, m.ospa /= n;
-	if (defined) m.rmse_m = rmse / defined, m.yaw_err_deg = yaw / defined;
-	return m;
+	FiguresMean m;
+	for (const auto& f : items) m.add(f);
+	return m.result();
 }
 }  // namespace whiskermap::eval

@@ -7,6 +7,33 @@
 
 namespace whiskermap::eval
 {
+PerPoseEvaluation::Accumulator::Accumulator(
+	std::vector<world::Table> truth, const EvalOptions& opts, bool withLocal)
+	: m_truth(std::move(truth)), m_opts(opts), m_withLocal(withLocal)
+{
+}
+
+void PerPoseEvaluation::Accumulator::add(
+	const std::vector<world::Table>& tables, const mrpt::poses::CPose2D& robotPose)
+{
+	m_poses++;
+	m_all.add(MapEvaluation::compute(m_truth, tables, m_opts).figures);
+	if (!m_withLocal) return;
+	m_near.clear();
+	for (const auto& t : m_truth)
+		if (std::hypot(t.x - robotPose.x(), t.y - robotPose.y()) <= m_opts.local_radius) m_near.push_back(t);
+	m_local.add(MapEvaluation::compute(m_near, tables, m_opts).figures);
+}
+
+PerPoseEvaluation PerPoseEvaluation::Accumulator::result() const
+{
+	PerPoseEvaluation e;
+	e.poses = m_poses;
+	e.all = m_all.result();
+	if (m_withLocal) e.local = m_local.result();
+	return e;
+}
+
 PerPoseEvaluation PerPoseEvaluation::compute(
 	const std::vector<world::Table>& truth, const std::vector<std::vector<world::Table>>& perPose,
 	const std::vector<mrpt::poses::CPose2D>& robotPoses, const EvalOptions& opts)
@@ -16,21 +43,9 @@ PerPoseEvaluation PerPoseEvaluation::compute(
 		throw core::Error(
 			"per-pose evaluation: " + std::to_string(perPose.size()) + " poses but " +
 			std::to_string(robotPoses.size()) + " robot poses");
-	std::vector<Figures> all, local;
+	Accumulator acc(truth, opts, withLocal);
 	for (size_t i = 0; i < perPose.size(); i++)
-	{
-		all.push_back(MapEvaluation::compute(truth, perPose[i], opts).figures);
-		if (!withLocal) continue;
-		std::vector<world::Table> near;
-		for (const auto& t : truth)
-			if (std::hypot(t.x - robotPoses[i].x(), t.y - robotPoses[i].y()) <= opts.local_radius)
-				near.push_back(t);
-		local.push_back(MapEvaluation::compute(near, perPose[i], opts).figures);
-	}
-	PerPoseEvaluation e;
-	e.poses = perPose.size();
-	e.all = Figures::mean(all);
-	if (withLocal) e.local = Figures::mean(local);
-	return e;
+		acc.add(perPose[i], withLocal ? robotPoses[i] : mrpt::poses::CPose2D());
+	return acc.result();
 }
 }  // namespace whiskermap::eval

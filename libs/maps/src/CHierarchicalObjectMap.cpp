@@ -90,6 +90,7 @@ void CHierarchicalObjectMap::TInsertionOptions::loadFromConfigFile(
 		memory_size = static_cast<size_t>(sec.integer("memory_size", memory_size, 1, 1000));
 		seed = static_cast<uint64_t>(sec.integer("seed", static_cast<long>(seed), 0, 1L << 53));
 		use_sensor_noise = sec.boolean("use_sensor_noise", use_sensor_noise);
+		keep_history = sec.boolean("keep_history", keep_history);
 		auto& m = consolidation;
 		m.merge_distance = sec.number("merge_distance", m.merge_distance, 0, 100);
 		m.merge_angle = core::deg2rad(sec.number("merge_angle_deg", core::rad2deg(m.merge_angle), 0, 90));
@@ -99,7 +100,7 @@ void CHierarchicalObjectMap::TInsertionOptions::loadFromConfigFile(
 
 void CHierarchicalObjectMap::TInsertionOptions::dumpToTextStream(std::ostream& out) const
 {
-	out << "memory_size=" << memory_size << "\nseed=" << seed << "\nuse_sensor_noise=" << use_sensor_noise
+	out << "memory_size=" << memory_size << "\nseed=" << seed << "\nuse_sensor_noise=" << use_sensor_noise << "\nkeep_history=" << keep_history
 		<< "\nmerge_distance=" << consolidation.merge_distance
 		<< "\nmerge_angle_deg=" << core::rad2deg(consolidation.merge_angle)
 		<< "\nevidence_margin=" << consolidation.evidence_margin << "\n";
@@ -180,36 +181,10 @@ mrpt::maps::CMetricMap* CHierarchicalObjectMap::internal_CreateFromMapDefinition
 
 CHierarchicalObjectMap::CHierarchicalObjectMap() = default;
 
-CHierarchicalObjectMap::CHierarchicalObjectMap(const CHierarchicalObjectMap& o) : CMetricMap(o)
-{
-	*this = o;
-}
-
-CHierarchicalObjectMap& CHierarchicalObjectMap::operator=(const CHierarchicalObjectMap& o)
-{
-	if (this == &o) return *this;
-	genericMapParams = o.genericMapParams;
-	insertionOptions = o.insertionOptions;
-	likelihoodOptions = o.likelihoodOptions;
-	renderOptions = o.renderOptions;
-	modelParams = o.modelParams;
-	samplerParams = o.samplerParams;
-	m_poses = o.m_poses;
-	m_consolidator = o.m_consolidator;
-	m_shapelets = o.m_shapelets;
-	m_memory = o.m_memory;
-	m_proposed = o.m_proposed;
-	m_accepted = o.m_accepted;
-	m_lastStep = o.m_lastStep;
-	m_snapshotTemperature = o.m_snapshotTemperature;
-	m_sampler.reset();  // holds no state between steps: rebuilt on the next insertion
-	return *this;
-}
-
 world::Table CHierarchicalObjectMap::toWorldTable(const model::Table& t) const
 {
 	return world::Table{
-		t.x, t.y, core::wrapToPi(t.theta), modelParams.table_length, modelParams.table_width,
+		t.x, t.y, core::angleDiff(t.theta, 0, M_PI), modelParams.table_length, modelParams.table_width,
 		t.leg_width, t.texture};
 }
 
@@ -230,18 +205,20 @@ std::vector<world::Obstacle> CHierarchicalObjectMap::mappedLegs() const
 	return legs;
 }
 
-bool CHierarchicalObjectMap::isEmpty() const { return m_poses.empty() && objects().empty(); }
+bool CHierarchicalObjectMap::isEmpty() const { return m_steps == 0 && objects().empty(); }
 
 void CHierarchicalObjectMap::internal_clear()
 {
 	m_poses.clear();
-	m_consolidator = TableConsolidator();
+	m_consolidator.clear();
 	m_shapelets.clear();
 	m_memory = inference::ShapeletMemory(insertionOptions.memory_size);
 	m_proposed.fill(0);
 	m_accepted.fill(0);
 	m_lastStep = {};
-	m_sampler.reset();
+	m_lastRecord = {};
+	m_lastInput = {};
+	m_steps = 0;
 }
 
 bool CHierarchicalObjectMap::internal_insertObservation(
@@ -249,35 +226,47 @@ bool CHierarchicalObjectMap::internal_insertObservation(
 {
 	const auto* sweep = dynamic_cast<const obs::CObservationWhiskerContacts*>(&o);
 	if (!sweep) return false;
-	const mrpt::poses::CPose2D pose = robotPose ? mrpt::poses::CPose2D(*robotPose) : mrpt::poses::CPose2D();
-	const auto shapelets = sweep->toShapelets(pose);
+	auto in = prepareStep(*sweep, robotPose ? mrpt::poses::CPose2D(*robotPose) : mrpt::poses::CPose2D());
+	auto result = m_solver.solve(in, samplerParams, m_snapshotTemperature);
+	integrateStep(std::move(in), std::move(result));
+	return true;
+}
 
-	const auto model = modelFor(sweep->noise);
-	if (!m_sampler || !(model == m_samplerModel))
-	{
-		m_sampler = std::make_unique<inference::BlackboardSampler>(model, samplerParams);
-		m_samplerModel = model;
-	}
+TStepInput CHierarchicalObjectMap::prepareStep(
+	const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose)
+{
 	if (m_memory.capacity() != insertionOptions.memory_size)
 		m_memory = inference::ShapeletMemory(insertionOptions.memory_size);
-	m_consolidator.setOptions(insertionOptions.consolidation);
+	TStepInput in;
+	in.pose = pose;
+	in.shapelets = sweep.toShapelets(pose);
+	m_memory.add(in.shapelets);  // working memory: the N most recent shapelets
+	in.memory = m_memory.shapelets();
+	in.seed = splitmix64(insertionOptions.seed ^ splitmix64(m_steps));
+	in.model = modelFor(sweep.noise);
+	m_steps++;
+	return in;
+}
 
-	m_memory.add(shapelets);  // working memory: the N most recent shapelets
-	m_lastStep = m_sampler->step(
-		m_memory.shapelets(), splitmix64(insertionOptions.seed ^ splitmix64(m_poses.size())),
-		m_snapshotTemperature);
+void CHierarchicalObjectMap::integrateStep(TStepInput in, inference::StepResult result)
+{
 	for (size_t k = 0; k < inference::MOVE_COUNT; k++)
-		m_proposed[k] += m_lastStep.proposed[k], m_accepted[k] += m_lastStep.accepted[k];
-
+		m_proposed[k] += result.proposed[k], m_accepted[k] += result.accepted[k];
 	TPoseRecord rec;
-	rec.pose = pose;
-	rec.logPosterior = m_lastStep.logPosterior;
-	rec.shapelets = static_cast<uint32_t>(m_memory.shapelets().size());
-	for (const auto& t : m_lastStep.map.tables) rec.tables.push_back(toWorldTable(t));
-	m_consolidator.addPose(rec.tables, shapelets);
-	m_shapelets.insert(m_shapelets.end(), shapelets.begin(), shapelets.end());
-	m_poses.push_back(std::move(rec));
-	return true;
+	rec.pose = in.pose;
+	rec.logPosterior = result.logPosterior;
+	rec.shapelets = static_cast<uint32_t>(in.memory.size());
+	for (const auto& t : result.map.tables) rec.tables.push_back(toWorldTable(t));
+	m_consolidator.setOptions(insertionOptions.consolidation);
+	m_consolidator.addPose(rec.tables, in.shapelets);
+	if (insertionOptions.keep_history)
+	{
+		m_shapelets.insert(m_shapelets.end(), in.shapelets.begin(), in.shapelets.end());
+		m_poses.push_back(rec);
+	}
+	m_lastRecord = std::move(rec);
+	m_lastInput = std::move(in);
+	m_lastStep = std::move(result);
 }
 
 model::ModelParams CHierarchicalObjectMap::modelFor(const obs::TSensorNoise& noise) const
@@ -319,8 +308,8 @@ std::string CHierarchicalObjectMap::asString() const
 {
 	std::ostringstream s;
 	const size_t supported = supportedTables().size();
-	s << "CHierarchicalObjectMap: " << m_poses.size() << " sweeps inserted, " << m_shapelets.size()
-	  << " shapelets, " << objects().size() << " objects (" << supported << " with support >= "
+	s << "CHierarchicalObjectMap: " << m_steps << " sweeps inserted, " << m_shapelets.size()
+	  << " shapelets kept, " << objects().size() << " objects (" << supported << " with support >= "
 	  << likelihoodOptions.min_support << ")";
 	return s.str();
 }
@@ -356,6 +345,7 @@ void CHierarchicalObjectMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& s
 		obj->insert(top);
 		scene.insert(obj);
 	}
+	if (m_shapelets.empty()) return;
 	auto points = CPointCloud::Create();
 	auto normals = CSetOfLines::Create();
 	for (const auto& s : m_shapelets)
@@ -399,11 +389,13 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 		<< m.leg_width << m.texture << m.parent_gate;
 	const auto& c = insertionOptions.consolidation;
 	out.WriteAs<uint32_t>(insertionOptions.memory_size);
-	out << insertionOptions.seed << insertionOptions.use_sensor_noise << c.merge_distance << c.merge_angle << c.evidence_margin;
+	out << insertionOptions.seed << insertionOptions.use_sensor_noise << insertionOptions.keep_history
+		<< c.merge_distance << c.merge_angle << c.evidence_margin;
 	out << likelihoodOptions.sweep.sigma_contact << likelihoodOptions.sweep.p_unexplained
 		<< likelihoodOptions.sweep.p_miss << likelihoodOptions.min_support << renderOptions.table_height
 		<< renderOptions.top_thickness << renderOptions.octomap_resolution;
 	// Content.
+	out << m_steps;
 	out.WriteAs<uint32_t>(m_poses.size());
 	for (const auto& p : m_poses)
 	{
@@ -435,23 +427,25 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 				m.leg_width >> m.texture >> m.parent_gate;
 			auto& c = insertionOptions.consolidation;
 			insertionOptions.memory_size = in.ReadAs<uint32_t>();
-			in >> insertionOptions.seed >> insertionOptions.use_sensor_noise >> c.merge_distance >> c.merge_angle >> c.evidence_margin;
+			in >> insertionOptions.seed >> insertionOptions.use_sensor_noise >> insertionOptions.keep_history >>
+				c.merge_distance >> c.merge_angle >> c.evidence_margin;
 			in >> likelihoodOptions.sweep.sigma_contact >> likelihoodOptions.sweep.p_unexplained >>
 				likelihoodOptions.sweep.p_miss >> likelihoodOptions.min_support >>
 				renderOptions.table_height >> renderOptions.top_thickness >> renderOptions.octomap_resolution;
+			in >> m_steps;
 			m_poses.resize(in.ReadAs<uint32_t>());
 			for (auto& p : m_poses)
 			{
 				in >> p.pose >> p.logPosterior >> p.shapelets;
 				readVec(in, p.tables);
 			}
-			auto& objs = m_consolidator.objects();
-			objs.resize(in.ReadAs<uint32_t>());
+			std::vector<TMapObject> objs(in.ReadAs<uint32_t>());
 			for (auto& o : objs)
 			{
 				read(in, o.table);
 				in >> o.support >> o.evidence >> o.sum_x >> o.sum_y >> o.sum_cos2 >> o.sum_sin2;
 			}
+			m_consolidator.setObjects(std::move(objs));
 			m_consolidator.setOptions(c);
 			readVec(in, m_shapelets);
 			std::vector<obs::Shapelet> memory;

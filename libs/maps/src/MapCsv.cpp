@@ -1,6 +1,7 @@
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/maps/MapCsv.h>
+#include <whiskermap/maps/PerPoseCsvWriter.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -44,14 +45,41 @@ void MapCsv::writeObjects(const std::string& path, const std::vector<TMapObject>
 
 void MapCsv::writePerPose(const std::string& path, const std::vector<TPoseRecord>& poses)
 {
-	writeFile(path, "pose,x,y,yaw_deg,length,width,leg_width,texture,log_posterior", [&](FILE* f) {
-		for (size_t i = 0; i < poses.size(); i++)
-			for (const auto& t : poses[i].tables)
-			{
-				std::fprintf(f, "%zu,", i);
-				writeTable(f, t);
-				std::fprintf(f, ",%.6f\n", poses[i].logPosterior);
-			}
-	});
+	PerPoseCsvWriter w(path);
+	for (size_t i = 0; i < poses.size(); i++) w.add(i, poses[i]);
+	w.close();
+}
+
+PerPoseCsvWriter::PerPoseCsvWriter(const std::string& path) : m_path(path)
+{
+	m_file = std::fopen((path + ".tmp").c_str(), "w");
+	if (!m_file) throw core::Error(path + ": cannot create file");
+	std::fprintf(m_file, "pose,x,y,yaw_deg,length,width,leg_width,texture,log_posterior\n");
+}
+
+PerPoseCsvWriter::~PerPoseCsvWriter()
+{
+	if (!m_file) return;
+	std::fclose(m_file);
+	std::remove((m_path + ".tmp").c_str());
+}
+
+void PerPoseCsvWriter::add(size_t index, const TPoseRecord& pose)
+{
+	for (const auto& t : pose.tables)
+	{
+		std::fprintf(m_file, "%zu,", index);
+		writeTable(m_file, t);
+		std::fprintf(m_file, ",%.6f\n", pose.logPosterior);
+	}
+}
+
+void PerPoseCsvWriter::close()
+{
+	const bool ok = std::ferror(m_file) == 0;
+	const bool closed = std::fclose(m_file) == 0;
+	m_file = nullptr;
+	if (!ok || !closed) throw core::Error(m_path + ": write failed");
+	std::filesystem::rename(m_path + ".tmp", m_path);
 }
 }  // namespace whiskermap::maps

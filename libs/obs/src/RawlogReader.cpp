@@ -49,6 +49,15 @@ void checkGzipIntegrity(const std::string& path)
 
 RawlogReader::Contents RawlogReader::read(const std::string& path)
 {
+	std::vector<Sweep> sweeps;
+	auto c = forEach(path, [&](const Sweep& s) { sweeps.push_back(s); });
+	c.sweeps = std::move(sweeps);
+	return c;
+}
+
+RawlogReader::Contents RawlogReader::forEach(
+	const std::string& path, const std::function<void(const Sweep&)>& onSweep)
+{
 	if (!std::filesystem::exists(path)) throw Error(path + ": no such file");
 	if (std::filesystem::is_directory(path)) throw Error(path + ": is a directory, not a rawlog");
 	checkGzipIntegrity(path);
@@ -68,7 +77,8 @@ RawlogReader::Contents RawlogReader::read(const std::string& path)
 			throw Error(
 				path + ": whisker sweep at object #" + std::to_string(c.objects) +
 				" has no robot pose before it (no odometry or action)");
-		c.sweeps.push_back({*pose, w});
+		c.sweepCount++;
+		onSweep(Sweep{*pose, w});
 	};
 
 	for (;;)

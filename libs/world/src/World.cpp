@@ -94,6 +94,23 @@ void World::save(const std::string& path) const
 	if (!f) throw Error(path + ": write failed");
 }
 
+World World::tiled(int nx, int ny) const
+{
+	World w = *this;
+	const double dx = x_max - x_min, dy = y_max - y_min;
+	w.x_max = x_min + nx * dx;
+	w.y_max = y_min + ny * dy;
+	w.tables.clear();
+	for (int j = 0; j < ny; j++)
+		for (int i = 0; i < nx; i++)
+			for (auto t : tables)
+			{
+				t.x += i * dx, t.y += j * dy;
+				w.tables.push_back(t);
+			}
+	return w;
+}
+
 std::vector<Obstacle> World::obstacles(double wallThickness) const
 {
 	std::vector<Obstacle> obs;

@@ -25,5 +25,6 @@ struct Figures
 	/** Mean of each figure over `items`; rmse_m and yaw_err_deg over the items where they
 	 *  are defined (NaN if none). All fields keep their defaults when `items` is empty. */
 	static Figures mean(const std::vector<Figures>& items);
+
 };
 }  // namespace whiskermap::eval

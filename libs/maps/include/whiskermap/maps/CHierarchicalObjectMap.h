@@ -5,6 +5,7 @@
 #include <whiskermap/inference/BlackboardSampler.h>
 #include <whiskermap/inference/SamplerParams.h>
 #include <whiskermap/inference/ShapeletMemory.h>
+#include <whiskermap/maps/StepSolver.h>
 #include <whiskermap/maps/SweepLikelihood.h>
 #include <whiskermap/maps/TPoseRecord.h>
 #include <whiskermap/maps/TableConsolidator.h>
@@ -40,6 +41,10 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 		 *  when it is larger (the paper's eq. 7 uses the sensor noise), scaling parent_gate
 		 *  with sigma_r. */
 		bool use_sensor_noise = true;
+		/** Keep every per-pose record and shapelet (poseRecords(), shapelets()). Off, memory
+		 *  stays bounded by the map, whatever the trajectory's length: a streaming consumer
+		 *  reads lastRecord() and lastInput() after each insertion instead. */
+		bool keep_history = true;
 		TableConsolidator::TOptions consolidation;
 		void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
 		void dumpToTextStream(std::ostream& out) const override;
@@ -63,8 +68,6 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	};
 
 	CHierarchicalObjectMap();
-	CHierarchicalObjectMap(const CHierarchicalObjectMap& other);
-	CHierarchicalObjectMap& operator=(const CHierarchicalObjectMap& other);
 
 	TInsertionOptions insertionOptions;
 	TLikelihoodOptions likelihoodOptions;
@@ -72,11 +75,16 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	model::ModelParams modelParams;  ///< [<prefix>_model]
 	inference::SamplerParams samplerParams;  ///< [<prefix>_sampler]
 
-	/** Per inserted sweep, in order. */
+	/** Per inserted sweep, in order (empty unless insertionOptions.keep_history). */
 	const std::vector<TPoseRecord>& poseRecords() const { return m_poses; }
+	/** The record and the input of the last inserted sweep. */
+	const TPoseRecord& lastRecord() const { return m_lastRecord; }
+	const TStepInput& lastInput() const { return m_lastInput; }
+	/** Sweeps inserted so far. */
+	uint64_t steps() const { return m_steps; }
 	/** The consolidated objects. */
 	const std::vector<TMapObject>& objects() const { return m_consolidator.objects(); }
-	/** Every shapelet inserted, world frame. */
+	/** Every shapelet inserted, world frame (empty unless insertionOptions.keep_history). */
 	const std::vector<obs::Shapelet>& shapelets() const { return m_shapelets; }
 	/** Totals over all steps of proposals and acceptances per move type. */
 	const std::array<uint64_t, inference::MOVE_COUNT>& proposed() const { return m_proposed; }
@@ -84,10 +92,18 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 
 	/** The last step's full result (MAP blackboard, snapshot if asked for). */
 	const inference::StepResult& lastStep() const { return m_lastStep; }
+
+	/** insertObservation in two halves, for callers that solve steps elsewhere (in parallel,
+	 *  with one StepSolver per thread): prepareStep() takes the sweep into the working
+	 *  memory and fixes the step's input; integrateStep() records the solved step and
+	 *  consolidates it. Calls must alternate, in sweep order. */
+	TStepInput prepareStep(const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose);
+	void integrateStep(TStepInput in, inference::StepResult result);
 	/** Ask the next insertions for a blackboard snapshot at this schedule index (-1: none). */
 	void setSnapshotTemperature(int index) { m_snapshotTemperature = index; }
 
-	/** A model table as a full table of the known size. */
+	/** A model table as a full table of the known size, yaw in (-90, 90] degrees (it is the
+	 *  same table turned by 180). */
 	world::Table toWorldTable(const model::Table& t) const;
 	/** The tables of the objects with support >= likelihoodOptions.min_support: the map as
 	 *  used for likelihoods, pictures, exports and evaluation. */
@@ -119,11 +135,11 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	inference::ShapeletMemory m_memory;
 	std::array<uint64_t, inference::MOVE_COUNT> m_proposed{}, m_accepted{};
 	inference::StepResult m_lastStep;
+	TPoseRecord m_lastRecord;
+	TStepInput m_lastInput;
+	uint64_t m_steps = 0;
 	int m_snapshotTemperature = -1;
-	/** Built from modelParams/samplerParams (adapted to the sweep's noise) when first needed
-	 *  or when that model changes; its buffers are reused across steps. */
-	std::unique_ptr<inference::BlackboardSampler> m_sampler;
-	model::ModelParams m_samplerModel;  ///< the model m_sampler was built with
+	StepSolver m_solver;
 	/** The model a sweep with this noise is scored with. */
 	model::ModelParams modelFor(const obs::TSensorNoise& noise) const;
 

@@ -2,13 +2,18 @@
 #include <whiskermap/maps/TMapObject.h>
 #include <whiskermap/obs/Shapelet.h>
 
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 namespace whiskermap::maps
 {
 /** Builds the consolidated object map from per-pose MAP tables: a table within the
  *  position and yaw gates (yaw modulo 180 degrees) of an object merges into the nearest
- *  such object; otherwise it starts a new one. Order-dependent by nature, and deterministic. */
+ *  such object; otherwise it starts a new one. Order-dependent by nature, and deterministic.
+ *  Objects are indexed on a uniform grid of their centres, so a pose costs the same however
+ *  large the map grows. */
 class TableConsolidator
 {
    public:
@@ -27,13 +32,25 @@ class TableConsolidator
 	void addPose(const std::vector<world::Table>& tables, const std::vector<obs::Shapelet>& shapelets);
 
 	const std::vector<TMapObject>& objects() const { return m_objects; }
-	std::vector<TMapObject>& objects() { return m_objects; }
+	/** Replaces all objects (deserialization). */
+	void setObjects(std::vector<TMapObject> objects);
 	const TOptions& options() const { return m_opts; }
 	void setOptions(const TOptions& o) { m_opts = o; }
-	void clear() { m_objects.clear(); }
+	void clear() { setObjects({}); }
 
    private:
+	static constexpr double CELL = 1.0;  ///< grid cell, metres (about a table)
+	static int64_t key(int ix, int iy) { return (int64_t(ix) << 32) ^ uint32_t(iy); }
+	static int cellOf(double v) { return static_cast<int>(std::floor(v / CELL)); }
+	/** Objects whose centres lie within `radius` of (x, y) (a superset, cell-wise). */
+	void near(double x, double y, double radius, std::vector<uint32_t>& out) const;
+	void index(uint32_t i);
+	void unindex(uint32_t i);
+
 	TOptions m_opts;
 	std::vector<TMapObject> m_objects;
+	std::unordered_map<int64_t, std::vector<uint32_t>> m_grid;
+	double m_reach = 0;  ///< largest centre-to-leg-edge distance of any object
+	std::vector<uint32_t> m_near;  // scratch
 };
 }  // namespace whiskermap::maps

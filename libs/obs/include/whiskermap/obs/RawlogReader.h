@@ -2,6 +2,7 @@
 #include <mrpt/poses/CPose2D.h>
 #include <whiskermap/obs/CObservationWhiskerContacts.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,9 +33,17 @@ class RawlogReader
 	{
 		std::vector<Sweep> sweeps;
 		size_t objects = 0;  ///< top-level objects read (actions, frames, observations)
+		size_t sweepCount = 0;  ///< whisker sweeps read
 		bool actionSensoryFrameFormat = false;  ///< true for the CActionCollection format
 	};
 
+	/** Reads the whole rawlog into memory. */
 	static Contents read(const std::string& path);
+
+	/** Streams the rawlog: calls `onSweep` for each sweep in order, holding one object in
+	 *  memory at a time. Returns the counts (its `sweeps` stay empty). The file is verified
+	 *  end to end before the first sweep is delivered, so a damaged file fails before any
+	 *  work is done. */
+	static Contents forEach(const std::string& path, const std::function<void(const Sweep&)>& onSweep);
 };
 }  // namespace whiskermap::obs

@@ -21,6 +21,10 @@ struct World
 	/** Writes the world in the same .ini format (it loads back to the same values). */
 	void save(const std::string& path) const;
 
+	/** This world repeated nx times along x and ny times along y (same table density): the
+	 *  scaling benchmarks' worlds of 6, 60 and 600 tables. */
+	World tiled(int nx, int ny) const;
+
 	/** All legs (tagged with their table and leg index) and four wall slabs of the given
 	 *  thickness just outside the arena. */
 	std::vector<Obstacle> obstacles(double wallThickness = 1.0) const;

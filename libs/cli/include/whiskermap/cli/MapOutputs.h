@@ -1,0 +1,62 @@
+#pragma once
+#include <whiskermap/cli/Decimator.h>
+#include <whiskermap/cli/OutputDir.h>
+#include <whiskermap/eval/PerPoseEvaluation.h>
+#include <whiskermap/maps/CHierarchicalObjectMap.h>
+#include <whiskermap/maps/PerPoseCsvWriter.h>
+#include <whiskermap/obs/RawlogReader.h>
+#include <whiskermap/render/TopDownImage.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace whiskermap::cli
+{
+/** whisker-map's outputs (doc/outputs.md), written as the sweeps stream through the map:
+ *  per-pose rows, montage and contact drawing, robot path and contacts for the 3-D scene
+ *  (evenly decimated beyond a bound) and per-pose evaluation accumulate step by step, so
+ *  memory stays bounded however long the run; finish() writes the rest. */
+class MapOutputs
+{
+   public:
+	struct TSettings
+	{
+		std::string input, config;
+		const world::World* world = nullptr;  ///< ground truth, if given
+		double x0 = 0, x1 = 1, y0 = 0, y1 = 1;  ///< picture bounds, metres
+		int snapshotPose = -1, snapshotTemperature = 0;
+		bool quiet = false;
+		bool simpleMap = false;  ///< also write map.simplemap (keeps every sweep in memory)
+		unsigned jobs = 1;
+	};
+
+	MapOutputs(OutputDir& out, const maps::CHierarchicalObjectMap& map, const TSettings& s);
+
+	/** After sweep `index` was inserted into the map. */
+	void onStep(size_t index, const obs::RawlogReader::Sweep& sweep, double ms);
+	/** Writes the remaining files; returns the text to print (evaluation table), if any. */
+	std::string finish(double wallSeconds);
+
+	size_t steps() const { return m_steps; }
+	double medianMs() const;
+
+   private:
+	void drawSnapshot(size_t index);
+	void writeScene(const std::string& path) const;
+	void writeSummary(const std::string& path, double wallSeconds, const std::string& metricsJson) const;
+
+	OutputDir& m_out;
+	const maps::CHierarchicalObjectMap& m_map;
+	TSettings m_s;
+	maps::PerPoseCsvWriter m_perPose;
+	render::TopDownImage m_montage, m_contacts;
+	Decimator<mrpt::poses::CPose2D> m_path{20000};
+	Decimator<obs::Shapelet> m_shapelets{50000};
+	std::optional<eval::PerPoseEvaluation::Accumulator> m_eval;
+	std::vector<obs::RawlogReader::Sweep> m_kept;  ///< for identifiability or the simple map
+	std::vector<double> m_ms;
+	size_t m_steps = 0, m_shapeletCount = 0, m_tables = 0, m_maxTables = 0;
+};
+}  // namespace whiskermap::cli
