@@ -44,9 +44,11 @@ TEST(SamplerParams, ShippedConfigEqualsBuiltInDefaults)
 	EXPECT_EQ(f.r1, d.r1);
 	EXPECT_EQ(f.r2, d.r2);
 	EXPECT_EQ(f.r3, d.r3);
+	EXPECT_EQ(f.r4, d.r4);
 	EXPECT_EQ(f.schedule.betas(), d.schedule.betas());
 	EXPECT_EQ(f.sweeps_per_temperature, d.sweeps_per_temperature);
 	EXPECT_EQ(f.coldest_sweeps, d.coldest_sweeps);
+	EXPECT_EQ(f.polish_sweeps, d.polish_sweeps);
 	EXPECT_EQ(f.existing_leg_probability, d.existing_leg_probability);
 	EXPECT_EQ(f.leg_position_noise, d.leg_position_noise);
 	EXPECT_EQ(f.leg_angle_noise, d.leg_angle_noise);

@@ -1,10 +1,12 @@
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/inference/BlackboardSampler.h>
+#include <whiskermap/inference/PoseFit.h>
 #include <whiskermap/model/Densities.h>
 #include <whiskermap/model/Posterior.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace whiskermap::inference
 {
@@ -13,8 +15,16 @@ using model::Leg;
 using model::NONE;
 using model::Table;
 
+namespace
+{
+/** Weight of "stay near the current centre" in a free leg's refit: it only fixes the
+ *  position along a face when the contacts leave it open (PoseFit.h). */
+constexpr double FREE_LEG_PULL = 1e-3;
+bool greedy(double beta) { return std::isinf(beta); }
+}  // namespace
+
 BlackboardSampler::BlackboardSampler(const model::ModelParams& model, const SamplerParams& params)
-	: m_model(model), m_params(params), m_bb(model), m_backup(model)
+	: m_model(model), m_params(params), m_bb(model), m_backup(model), m_best(model)
 {
 }
 
@@ -33,18 +43,28 @@ StepResult BlackboardSampler::step(
 		for (int i = 0; i < sweeps; i++)
 		{
 			sweep(betas[k]);
-			if (!coldest) continue;
-			const double lp = model::logJoint(m_bb);
-			if (lp > result.logPosterior)
-			{
-				result.logPosterior = lp;
-				result.map = m_bb.compact();
-			}
+			if (coldest) checkpoint(result);
 		}
 		if (static_cast<int>(k) == snapshotTemperature) result.snapshot = m_bb.compact();
 	}
+	// Zero temperature, from the best board: only improvements (doc/sampler.md, "Polish").
+	m_bb = m_best;
+	for (int i = 0; i < m_params.polish_sweeps; i++)
+	{
+		sweep(std::numeric_limits<double>::infinity());
+		checkpoint(result);
+	}
+	result.map = m_best.compact();
 	m_result = nullptr;
 	return result;
+}
+
+void BlackboardSampler::checkpoint(StepResult& result)
+{
+	const double lp = model::logJoint(m_bb);
+	if (lp <= result.logPosterior) return;
+	result.logPosterior = lp;
+	m_best = m_bb;
 }
 
 // One pass of Algorithm 1's body at inverse temperature beta, then the prune.
@@ -70,9 +90,23 @@ bool BlackboardSampler::accept(Move m, double logOdds, double beta)
 {
 	const auto i = static_cast<size_t>(m);
 	m_result->proposed[i]++;
-	const bool yes = uniform() < model::annealedAcceptance(logOdds, beta);
+	const bool yes = draw(logOdds, beta);
 	m_result->accepted[i] += yes;
 	return yes;
+}
+
+bool BlackboardSampler::acceptRefit(double logOdds, double beta)
+{
+	m_result->refitProposed++;
+	const bool yes = draw(logOdds, beta);
+	m_result->refitAccepted += yes;
+	return yes;
+}
+
+bool BlackboardSampler::draw(double logOdds, double beta)
+{
+	if (greedy(beta)) return logOdds > 0;
+	return uniform() < model::annealedAcceptance(logOdds, beta);
 }
 
 // Q(pa(S)): an existing leg whose perimeter is near S, or a new leg with S on its face.
@@ -81,13 +115,18 @@ void BlackboardSampler::prime(size_t s, double beta)
 	legsNearShapelet(s, m_candidates);
 	if (!m_candidates.empty() && uniform() < m_params.existing_leg_probability)
 	{
-		const Id l = m_candidates[pick(m_candidates.size())];
-		if (accept(Move::Priming, model::logShapeletLinkGain(m_bb, s, l), beta))
-			m_bb.setShapeletParent(s, l);
+		proposeLink(s, m_candidates[pick(m_candidates.size())], Move::Priming, beta);
 		return;
 	}
-	// The contact lies on the leg's face with outward normal theta_S: the centre is half a
-	// leg width inward along -normal, anywhere along the face.
+	const Id id = m_bb.addLeg(newLegFor(s));
+	m_bb.setShapeletParent(s, id);
+	if (!accept(Move::Priming, model::logOddsLeg(m_bb, id), beta)) m_bb.removeLeg(id);
+}
+
+// The contact lies on the leg's face with outward normal theta_S: the centre is half a leg
+// width inward along -normal, anywhere along the face.
+Leg BlackboardSampler::newLegFor(size_t s)
+{
 	const obs::Shapelet& sh = m_bb.shapelets()[s];
 	const double w = m_model.leg_width, nx = std::cos(sh.normal), ny = std::sin(sh.normal);
 	const double along = alongFace(s);
@@ -97,36 +136,58 @@ void BlackboardSampler::prime(size_t s, double beta)
 	l.theta = sh.normal + m_params.leg_angle_noise * gaussian();
 	l.wx = l.wy = w;
 	l.texture = sh.texture;
-	const Id id = m_bb.addLeg(l);
-	m_bb.setShapeletParent(s, id);
-	if (!accept(Move::Priming, model::logOddsLeg(m_bb, id), beta)) m_bb.removeLeg(id);
+	return l;
 }
 
+// Split: contact s leaves leg `from` (which refits to the rest) for a new leg of its own.
+// The reverse of a link; exact local change of logJoint, undone on rejection.
+void BlackboardSampler::proposeSplit(size_t s, double beta)
+{
+	const Id from = m_bb.shapeletParent(s);
+	const Leg old = m_bb.leg(from);
+	double gain = -model::logShapeletLinkGain(m_bb, s, from);
+	m_bb.setShapeletParent(s, NONE);
+	refitInPlace(from, gain);
+	const Id id = m_bb.addLeg(newLegFor(s));
+	m_bb.setShapeletParent(s, id);
+	if (accept(Move::Child, gain + model::logOddsLeg(m_bb, id), beta)) return;
+	m_bb.removeLeg(id);
+	m_bb.setLeg(from, old);
+	m_bb.setShapeletParent(s, from);
+}
+
+// Moves, in the order of the thresholds: 0 death, 1 new parent, 2 child, 3 refit, 4 parent.
 void BlackboardSampler::visitTable(Id t, double beta)
 {
 	const double u = uniform();
-	if (u < m_params.r1)
-	{
-		if (accept(Move::Death, -model::logOddsTable(m_bb, t), beta)) m_bb.removeTable(t);
-	}
-	else if (u >= m_params.r2 && u < m_params.r3)
-		proposeTableChild(t, beta);
+	const bool all = greedy(beta);
+	if ((all || u < m_params.r1) && m_bb.hasTable(t)) proposeTableDeath(t, beta);
+	// A table may miss up to 3 legs: the greedy polish offers each empty corner.
+	for (int i = 0; i < (all ? 3 : 1) && m_bb.hasTable(t); i++)
+		if (all || (u >= m_params.r2 && u < m_params.r3)) proposeTableChild(t, beta);
+	if ((all || (u >= m_params.r3 && u < m_params.r4)) && m_bb.hasTable(t)) proposeTableRefit(t, beta);
 	// Tables have no parents: the reparent and parent draws propose nothing.
 }
 
 void BlackboardSampler::visitLeg(Id l, double beta)
 {
 	const double u = uniform();
-	if (u < m_params.r1)
-	{
-		if (accept(Move::Death, -model::logOddsLeg(m_bb, l), beta)) m_bb.removeLeg(l);
-	}
-	else if (u < m_params.r2)
-		proposeLegReparent(l, beta);
-	else if (u < m_params.r3)
-		proposeLegChild(l, beta);
-	else
-		proposeTableForLeg(l, beta);
+	const bool all = greedy(beta);
+	if ((all || u < m_params.r1) && m_bb.hasLeg(l) &&
+		accept(Move::Death, -model::logOddsLeg(m_bb, l), beta))
+		m_bb.removeLeg(l);
+	if ((all || (u >= m_params.r1 && u < m_params.r2)) && m_bb.hasLeg(l)) proposeLegReparent(l, beta);
+	if ((all || (u >= m_params.r2 && u < m_params.r3)) && m_bb.hasLeg(l)) proposeLegChild(l, beta);
+	if ((all || (u >= m_params.r3 && u < m_params.r4)) && m_bb.hasLeg(l)) proposeLegRefit(l, beta);
+	if ((all || u >= m_params.r4) && m_bb.hasLeg(l)) proposeTableForLeg(l, beta);
+}
+
+// Death of a table takes the legs it invented (they explain nothing; the prune would remove
+// them), so the move is judged on the whole change. Undone exactly on rejection.
+void BlackboardSampler::proposeTableDeath(Id t, double beta)
+{
+	m_backup = m_bb;
+	if (!accept(Move::Death, removeTableAndOrphans(t), beta)) m_bb = m_backup;
 }
 
 // A new parent for a leg: any other table with a corner within the gate, or none.
@@ -149,9 +210,18 @@ void BlackboardSampler::proposeLegReparent(Id l, double beta)
 	if (accept(Move::Reparent, gain, beta)) m_bb.setLegParent(l, to);
 }
 
-// Q(ch(L) | L): a nearby shapelet not yet explained by L moves to L.
+// Q(ch(L) | L): a nearby shapelet not yet explained by L moves to L, or (half the time, if
+// L explains two or more) one of L's contacts leaves it for a new leg.
 void BlackboardSampler::proposeLegChild(Id l, double beta)
 {
+	m_candidates.clear();
+	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
+		if (m_bb.shapeletParent(s) == l) m_candidates.push_back(static_cast<Id>(s));
+	if (m_candidates.size() >= 2 && (greedy(beta) || uniform() < 0.5))
+	{
+		proposeSplit(static_cast<size_t>(m_candidates[pick(m_candidates.size())]), beta);
+		if (!greedy(beta)) return;
+	}
 	const auto& leg = m_bb.leg(l);
 	const model::OrientedRect r = model::legRect(leg);
 	m_candidates.clear();
@@ -160,10 +230,28 @@ void BlackboardSampler::proposeLegChild(Id l, double beta)
 			r.perimeter(m_bb.shapelets()[s].x, m_bb.shapelets()[s].y).distance <= m_model.parent_gate)
 			m_candidates.push_back(static_cast<Id>(s));
 	if (m_candidates.empty()) return;
-	const auto s = static_cast<size_t>(m_candidates[pick(m_candidates.size())]);
-	const double gain =
-		model::logShapeletLinkGain(m_bb, s, l) - model::logShapeletLinkGain(m_bb, s, m_bb.shapeletParent(s));
-	if (accept(Move::Child, gain, beta)) m_bb.setShapeletParent(s, l);
+	proposeLink(static_cast<size_t>(m_candidates[pick(m_candidates.size())]), l, Move::Child, beta);
+}
+
+// Shapelet s moves to leg l, l refits to its contacts (and corner), and the leg s leaves is
+// dropped if it is then a free leg explaining nothing (the prune would drop it). Exact local
+// change of logJoint, step by step; undone on rejection.
+void BlackboardSampler::proposeLink(size_t s, Id l, Move m, double beta)
+{
+	const Id from = m_bb.shapeletParent(s);
+	const Leg old = m_bb.leg(l);
+	double gain = model::logShapeletLinkGain(m_bb, s, l) - model::logShapeletLinkGain(m_bb, s, from);
+	m_bb.setShapeletParent(s, l);
+	refitInPlace(l, gain);
+	const bool drop = from != NONE && m_bb.leg(from).parent == NONE && !explains(from);
+	if (drop) gain -= model::logOddsLeg(m_bb, from);
+	if (accept(m, gain, beta))
+	{
+		if (drop) m_bb.removeLeg(from);
+		return;
+	}
+	m_bb.setLeg(l, old);
+	m_bb.setShapeletParent(s, from);
 }
 
 // Q(ch(T) | T): the missing leg at a uniformly chosen empty corner, exactly as eq. 6 expects.
@@ -193,17 +281,29 @@ void BlackboardSampler::proposeTableChild(Id t, double beta)
 void BlackboardSampler::proposeTableForLeg(Id l, double beta)
 {
 	constexpr double ADOPT_WEIGHT = 4;
-	Table candidates[8];
-	double weights[8], total = 0;
-	for (int i = 0; i < 8; i++)
+	m_tables.clear();
+	for (int i = 0; i < 8; i++) m_tables.push_back(tableWithLegAt(m_bb.leg(l), i / 2, i % 2 ? M_PI_2 : 0.0));
+	tablesForPairs(l);
+	m_weights.clear();
+	double total = 0;
+	for (const Table& t : m_tables)
+		total += m_weights.emplace_back(std::pow(ADOPT_WEIGHT, static_cast<double>(adoptable(t, l))));
+	size_t choice = 0;
+	for (double u = uniform() * total; choice + 1 < m_tables.size() && u >= m_weights[choice]; choice++)
+		u -= m_weights[choice];
+	// The chosen table, fitted to all the legs it adopts (PoseFit.h), then adopting anew.
+	Table chosen = m_tables[choice];
+	adoptable(chosen, l);  // fills m_candidates with the adopted legs
+	m_candidates.push_back(l);
+	m_fitLegs.clear();
+	m_fitCorners.clear();
+	for (const Id a : m_candidates)
 	{
-		candidates[i] = tableWithLegAt(m_bb.leg(l), i / 2, i % 2 ? M_PI_2 : 0.0);
-		weights[i] = std::pow(ADOPT_WEIGHT, static_cast<double>(adoptable(candidates[i], l)));
-		total += weights[i];
+		m_fitLegs.push_back(&m_bb.leg(a));
+		m_fitCorners.push_back(model::logLegGivenTable(m_bb.leg(a), chosen, m_model).corner);
 	}
-	int choice = 0;
-	for (double u = uniform() * total; choice < 7 && u >= weights[choice]; choice++) u -= weights[choice];
-	adoptable(candidates[choice], l);  // fills m_candidates with the adopted legs
+	if (m_candidates.size() > 1) chosen = fitTable(m_model, chosen, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
+	adoptable(chosen, l);
 	m_candidates.push_back(l);
 
 	// Tables the adopted legs leave without any leg that explains a shapelet are pruned at
@@ -228,7 +328,7 @@ void BlackboardSampler::proposeTableForLeg(Id l, double beta)
 		logOdds -= model::logLegLinkGain(m_bb, a, m_bb.leg(a).parent);
 		m_bb.setLegParent(a, NONE);
 	}
-	const Id id = m_bb.addTable(candidates[choice]);
+	const Id id = m_bb.addTable(chosen);
 	for (const Id a : m_candidates) m_bb.setLegParent(a, id);
 	logOdds += model::logOddsTable(m_bb, id);
 	for (const Id p : m_abandoned) logOdds += removeTableAndOrphans(p);
@@ -240,6 +340,13 @@ void BlackboardSampler::proposeTableForLeg(Id l, double beta)
 	}
 	m_bb.removeTable(id);
 	for (size_t i = 0; i < m_candidates.size(); i++) m_bb.setLegParent(m_candidates[i], m_oldParents[i]);
+}
+
+bool BlackboardSampler::explains(Id l) const
+{
+	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
+		if (m_bb.shapeletParent(s) == l) return true;
+	return false;
 }
 
 bool BlackboardSampler::hasSupportedLeg(Id table, const std::vector<Id>& except) const
@@ -258,7 +365,7 @@ double BlackboardSampler::removeTableAndOrphans(Id table)
 	double logOdds = -model::logOddsTable(m_bb, table);
 	m_orphans.clear();
 	for (Id l = 0; l < m_bb.legIdBound(); l++)
-		if (m_bb.hasLeg(l) && m_bb.leg(l).parent == table) m_orphans.push_back(l);
+		if (m_bb.hasLeg(l) && m_bb.leg(l).parent == table && !explains(l)) m_orphans.push_back(l);
 	m_bb.removeTable(table);
 	for (const Id l : m_orphans)
 	{
@@ -281,6 +388,28 @@ Table BlackboardSampler::tableWithLegAt(const Leg& leg, int corner, double turn)
 	return t;
 }
 
+void BlackboardSampler::tablesForPairs(Id l)
+{
+	const double gate = m_model.parent_gate, diagonal = std::hypot(m_model.table_length, m_model.table_width);
+	Table frame = tableWithLegAt(m_bb.leg(l), 0, 0);
+	frame.x = frame.y = frame.theta = 0;
+	double cx[4], cy[4];
+	for (int c = 0; c < 4; c++) model::tableCorner(frame, c, m_model, cx[c], cy[c]);
+	m_bb.forEachLegNear(m_bb.leg(l).x, m_bb.leg(l).y, diagonal + 2 * gate, [&](Id o) {
+		const model::Leg* pair[2] = {&m_bb.leg(l), &m_bb.leg(o)};
+		const double d = std::hypot(pair[1]->x - pair[0]->x, pair[1]->y - pair[0]->y);
+		// l at corner 0 or 1, o at another: with the 180 deg symmetry these are all the tables
+		// (each corner distance twice: the table and its mirror image across the pair).
+		for (int a = 0; a < 2 && o != l; a++)
+			for (int b = 0; b < 4; b++)
+			{
+				const int corners[2] = {a, b};
+				if (b != a && std::abs(std::hypot(cx[a] - cx[b], cy[a] - cy[b]) - d) <= 2 * gate)
+					m_tables.push_back(fitTable(m_model, frame, pair, corners, 2));
+			}
+	});
+}
+
 size_t BlackboardSampler::adoptable(const Table& t, Id l)
 {
 	bool taken[4] = {false, false, false, false};
@@ -298,6 +427,89 @@ size_t BlackboardSampler::adoptable(const Table& t, Id l)
 		m_candidates.push_back(o);
 	});
 	return m_candidates.size();
+}
+
+bool BlackboardSampler::fittedLeg(Id l, const Table* t, Leg& out)
+{
+	const Leg& leg = m_bb.leg(l);
+	m_contacts.clear();
+	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
+		if (m_bb.shapeletParent(s) == l) m_contacts.push_back(&m_bb.shapelets()[s]);
+	if (m_contacts.empty() && !t) return false;
+	double qx = leg.x, qy = leg.y, pull = FREE_LEG_PULL;
+	if (t)
+	{
+		model::tableCorner(*t, model::logLegGivenTable(leg, *t, m_model).corner, m_model, qx, qy);
+		pull = 1;
+	}
+	out = fitLeg(m_model, m_contacts.data(), m_contacts.size(), t, qx, qy, pull);
+	out.parent = leg.parent;
+	const model::OrientedRect r = model::legRect(out);
+	for (const obs::Shapelet* s : m_contacts)
+		if (r.perimeter(s->x, s->y).distance > m_model.parent_gate) return false;
+	return !t || std::hypot(out.x - qx, out.y - qy) <= m_model.parent_gate;
+}
+
+// Moves leg l to its closed-form pose (if valid) and adds the change of logJoint to `gain`:
+// local, eq. 20 before and after (the board without the leg is the same).
+bool BlackboardSampler::refitInPlace(Id l, double& gain)
+{
+	Leg fit;
+	const Id parent = m_bb.leg(l).parent;
+	if (!fittedLeg(l, parent == NONE ? nullptr : &m_bb.table(parent), fit)) return false;
+	gain -= model::logOddsLeg(m_bb, l);
+	m_bb.setLeg(l, fit);
+	gain += model::logOddsLeg(m_bb, l);
+	return true;
+}
+
+// Refit of a leg: the closed-form pose for its contacts and its parent's corner.
+void BlackboardSampler::proposeLegRefit(Id l, double beta)
+{
+	const Leg old = m_bb.leg(l);
+	double gain = 0;
+	if (refitInPlace(l, gain) && !acceptRefit(gain, beta)) m_bb.setLeg(l, old);
+}
+
+// Refit of a table: twice (fit the table to its legs that explain shapelets, then refit
+// those legs to their contacts and new corners), then its invented legs onto its corners.
+// Judged on the exact change of logJoint; undone on rejection.
+void BlackboardSampler::proposeTableRefit(Id t, double beta)
+{
+	m_savedLegs.clear();
+	for (Id l = 0; l < m_bb.legIdBound(); l++)
+		if (m_bb.hasLeg(l) && m_bb.leg(l).parent == t) m_savedLegs.emplace_back(l, m_bb.leg(l));
+	const Table old = m_bb.table(t);
+	const double before = model::logJoint(m_bb);
+	bool valid = true;
+	for (int round = 0; round < 2 && valid; round++)
+	{
+		m_fitLegs.clear();
+		m_fitCorners.clear();
+		for (const auto& [l, saved] : m_savedLegs)
+			if (explains(l)) m_fitLegs.push_back(&m_bb.leg(l)), m_fitCorners.push_back(m_bb.leg(l).corner);
+		if (m_fitLegs.empty()) return;  // nothing to fit (and nothing changed yet)
+		m_bb.setTable(t, fitTable(m_model, old, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size()));
+		for (const auto& [l, saved] : m_savedLegs)
+		{
+			Leg fit;
+			if (!explains(l)) continue;
+			valid = valid && fittedLeg(l, &m_bb.table(t), fit);
+			if (valid) m_bb.setLeg(l, fit);
+		}
+	}
+	const Table& now = m_bb.table(t);
+	for (const auto& [l, saved] : m_savedLegs)
+	{
+		if (explains(l)) continue;
+		Leg moved = saved;
+		model::tableCorner(now, saved.corner, m_model, moved.x, moved.y);
+		moved.theta = now.theta;
+		m_bb.setLeg(l, moved);
+	}
+	if (valid && acceptRefit(model::logJoint(m_bb) - before, beta)) return;
+	m_bb.setTable(t, old);
+	for (const auto& [l, saved] : m_savedLegs) m_bb.setLeg(l, saved);
 }
 
 // Where along its face the contact of shapelet s lies, from the leg centre. Uniform, unless

@@ -1,4 +1,5 @@
 #include <whiskermap/inference/ExactMapOracle.h>
+#include <whiskermap/inference/PoseFit.h>
 #include <whiskermap/model/Blackboard.h>
 #include <whiskermap/model/Densities.h>
 #include <whiskermap/model/Factors.h>
@@ -122,17 +123,6 @@ class Search
 		return gain;
 	}
 
-	/** Leg texture minimising the texture terms of eqs. 6-7: the mean of its shapelets' and
-	 *  its table's textures (all share sigma_tau). */
-	double meanTexture(uint32_t mask, const Table* t) const
-	{
-		double sum = t ? t->texture : 0;
-		int n = t ? 1 : 0;
-		for (size_t i = 0; i < m_s.size(); i++)
-			if (mask >> i & 1) sum += m_s[i].texture, n++;
-		return sum / n;
-	}
-
 	/** A square leg at (x, y, theta) with the shared side and texture. */
 	Leg leg(double x, double y, double theta, double texture) const
 	{
@@ -153,43 +143,11 @@ class Search
 	 *  rather than beyond it. */
 	Leg closedForm(uint32_t mask, const Table* t, double qx, double qy, double pull) const
 	{
-		const double w = m_p.leg_width;
-		double theta = t ? t->theta : 0, bestCost = std::numeric_limits<double>::infinity();
-		for (int ref = -1; ref < static_cast<int>(m_s.size()); ref++)
-		{
-			if ((ref < 0 && !t) || (ref >= 0 && !(mask >> ref & 1))) continue;
-			const double a0 = ref < 0 ? t->theta : m_s[ref].normal;
-			double sum = t ? core::angleDiff(t->theta, a0, M_PI_2) : 0;
-			int n = t ? 1 : 0;
-			for (size_t i = 0; i < m_s.size(); i++)
-				if (mask >> i & 1) sum += core::angleDiff(m_s[i].normal, a0, M_PI_2), n++;
-			const double th = a0 + sum / n;
-			double cost = t ? sq(core::angleDiff(t->theta, th, M_PI_2)) : 0;
-			for (size_t i = 0; i < m_s.size(); i++)
-				if (mask >> i & 1) cost += sq(core::angleDiff(m_s[i].normal, th, M_PI_2));
-			if (cost < bestCost) bestCost = cost, theta = th;
-		}
-		double ux[MAX_SHAPELETS], uy[MAX_SHAPELETS];  // outward normal of each member's face
-		double a11 = pull, a12 = 0, a22 = pull, b1 = pull * qx, b2 = pull * qy;
+		const obs::Shapelet* members[MAX_SHAPELETS];
+		size_t n = 0;
 		for (size_t i = 0; i < m_s.size(); i++)
-		{
-			if (!(mask >> i & 1)) continue;
-			const double f = m_s[i].normal - core::angleDiff(m_s[i].normal, theta, M_PI_2);
-			ux[i] = std::cos(f), uy[i] = std::sin(f);
-			const double d = ux[i] * m_s[i].x + uy[i] * m_s[i].y - w / 2;
-			a11 += ux[i] * ux[i], a12 += ux[i] * uy[i], a22 += uy[i] * uy[i], b1 += ux[i] * d, b2 += uy[i] * d;
-		}
-		const double det = a11 * a22 - a12 * a12;
-		double px = (a22 * b1 - a12 * b2) / det, py = (a11 * b2 - a12 * b1) / det;
-		for (int round = 0; round < 3; round++)
-			for (size_t i = 0; i < m_s.size(); i++)
-			{
-				if (!(mask >> i & 1)) continue;
-				const double a = -uy[i] * (m_s[i].x - px) + ux[i] * (m_s[i].y - py);  // along the face
-				const double excess = a - std::clamp(a, -w / 2, w / 2);
-				px -= uy[i] * excess, py += ux[i] * excess;
-			}
-		return leg(px, py, theta, meanTexture(mask, t));
+			if (mask >> i & 1) members[n++] = &m_s[i];
+		return fitLeg(m_p, members, n, t, qx, qy, pull);
 	}
 
 	/** Best free leg for `mask`: compass search on (x, y, theta), down to 0.1 mm and 0.001
@@ -534,7 +492,9 @@ class Search
 			const double a = tx * (m_s[i].x - o.leg.x) + ty * (m_s[i].y - o.leg.y);
 			lo = std::max(lo, a - w / 2), hi = std::min(hi, a + w / 2);
 		}
-		for (const double shift : {lo, hi})
+		// Just inside either end: a contact exactly at a corner may take the adjacent face.
+		constexpr double INSIDE = 1e-3;
+		for (const double shift : {lo + INSIDE, hi - INSIDE})
 		{
 			if (std::abs(shift) < 1e-3) continue;
 			Option slid = o;

@@ -68,6 +68,25 @@ void Blackboard::setLegParent(Id leg, Id table)
 
 void Blackboard::setShapeletParent(size_t shapelet, Id leg) { m_shapeletParent[shapelet] = leg; }
 
+void Blackboard::setTable(Id id, const Table& t)
+{
+	m_tableHash.erase(id, m_tables[id].x, m_tables[id].y);
+	m_tables[id] = t;
+	m_tableHash.insert(id, t.x, t.y);
+	for (Id l = 0; l < m_legs.capacity(); l++)
+		if (m_legs.alive(l) && m_legs[l].parent == id) setLegParent(l, id);
+}
+
+void Blackboard::setLeg(Id id, const Leg& l)
+{
+	const Id parent = m_legs[id].parent;
+	m_legHash.erase(id, m_legs[id].x, m_legs[id].y);
+	m_legs[id] = l;
+	m_legHash.insert(id, l.x, l.y);
+	m_maxLegRadius = std::max(m_maxLegRadius, std::hypot(l.wx, l.wy) / 2);
+	setLegParent(id, parent);
+}
+
 CornerCounts Blackboard::cornerCounts(Id table, Id excludeLeg) const
 {
 	CornerCounts c{0, 0, 0, 0};

@@ -5,6 +5,7 @@
 #include <whiskermap/model/ModelParams.h>
 
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace whiskermap::inference
@@ -27,26 +28,52 @@ class BlackboardSampler
 
    private:
 	void sweep(double beta);
+	/** If the board beats the best so far, it becomes the MAP candidate. */
+	void checkpoint(StepResult& result);
 	void prime(size_t shapelet, double beta);
+	/** One move drawn by r1..r4, or every move in turn at beta = inf (the greedy polish). */
 	void visitTable(model::Id t, double beta);
 	void visitLeg(model::Id l, double beta);
+	void proposeTableDeath(model::Id t, double beta);
 	void proposeLegReparent(model::Id l, double beta);
 	void proposeLegChild(model::Id l, double beta);
+	void proposeLink(size_t shapelet, model::Id l, Move m, double beta);
+	void proposeSplit(size_t shapelet, double beta);
+	/** A new free leg for shapelet s, with s on its face (Q(pa(S)), doc/sampler.md). */
+	model::Leg newLegFor(size_t s);
 	void proposeTableChild(model::Id t, double beta);
 	void proposeTableForLeg(model::Id l, double beta);
+	void proposeLegRefit(model::Id l, double beta);
+	void proposeTableRefit(model::Id t, double beta);
 	void prune();
 	double alongFace(size_t shapelet);
+	/** True if leg `l` explains a shapelet. */
+	bool explains(model::Id l) const;
 	/** True if a leg of `table` not in `except` explains a shapelet. */
 	bool hasSupportedLeg(model::Id table, const std::vector<model::Id>& except) const;
-	/** Removes `table` and then its (unsupported) legs; returns the change of logJoint. */
+	/** Removes `table` and then those of its legs that explain no shapelet (the prune would);
+	 *  returns the change of logJoint. */
 	double removeTableAndOrphans(model::Id table);
 	/** The table of the known size with `leg` at `corner`, turned by `turn` from its yaw. */
 	model::Table tableWithLegAt(const model::Leg& leg, int corner, double turn) const;
+	/** Tables of the known size with `l` and another leg near it at two of their corners
+	 *  (pair distance within 2 gates of the corners' distance), appended to m_tables. */
+	void tablesForPairs(model::Id l);
 	/** Fills m_candidates with the legs other than `l` that table `t` would adopt; their count. */
 	size_t adoptable(const model::Table& t, model::Id l);
+	/** Closed-form pose (PoseFit.h) of leg `l` for its contacts (m_contacts, filled here) and,
+	 *  with `t`, the corner of `t` nearest to it. False if there is nothing to fit or the fit
+	 *  leaves a contact or the corner outside the parent gate. */
+	bool fittedLeg(model::Id l, const model::Table* t, model::Leg& out);
+	/** Moves leg l to its fitted pose (if valid: returns true) and adds the change of logJoint
+	 *  to `gain`. */
+	bool refitInPlace(model::Id l, double& gain);
 
-	/** Counts the proposal and draws its acceptance from the annealed conditional. */
+	/** Counts the proposal and draws its acceptance from the annealed conditional; at
+	 *  beta = inf, accepts exactly the improvements. */
 	bool accept(Move m, double logOdds, double beta);
+	bool acceptRefit(double logOdds, double beta);
+	bool draw(double logOdds, double beta);
 	double uniform();
 	size_t pick(size_t n);
 	double gaussian();
@@ -65,6 +92,13 @@ class BlackboardSampler
 	std::vector<model::Id> m_tableOrder, m_legOrder, m_candidates, m_oldParents,
 		m_abandoned, m_orphans;
 	model::Blackboard m_backup;  ///< state before a compound move, to undo it
+	model::Blackboard m_best;  ///< the best board at the coldest temperature (the MAP)
+	std::vector<const obs::Shapelet*> m_contacts;
+	std::vector<const model::Leg*> m_fitLegs;
+	std::vector<int> m_fitCorners;
+	std::vector<std::pair<model::Id, model::Leg>> m_savedLegs;
+	std::vector<model::Table> m_tables;
+	std::vector<double> m_weights;
 	std::vector<uint8_t> m_legSupported, m_tableSupported;
 };
 }  // namespace whiskermap::inference

@@ -9,12 +9,16 @@ namespace whiskermap::inference
 struct SamplerParams
 {
 	/** Move thresholds on u ~ U(0,1) per hypothesis: death below r1, new parent below r2,
-	 *  child below r3, else a parent proposal. 0 <= r1 <= r2 <= r3 <= 1. */
-	double r1 = 0.2, r2 = 0.4, r3 = 0.7;
+	 *  child below r3, pose refit below r4, else a parent proposal.
+	 *  0 <= r1 <= r2 <= r3 <= r4 <= 1. */
+	double r1 = 0.2, r2 = 0.35, r3 = 0.55, r4 = 0.75;
 
 	AnnealingSchedule schedule = AnnealingSchedule::geometric(0.1, 10.0, 12);
 	int sweeps_per_temperature = 2;  ///< priming + hypothesis sweep + prune, per beta
 	int coldest_sweeps = 6;  ///< sweeps at the last beta; each is a MAP checkpoint
+	/** Greedy sweeps (zero temperature) from the best board: every move offered to every
+	 *  hypothesis, only improvements accepted; each is a MAP checkpoint. */
+	int polish_sweeps = 2;
 
 	/** Priming: probability of proposing an existing leg near the shapelet (when there is
 	 *  one) rather than a new leg. */

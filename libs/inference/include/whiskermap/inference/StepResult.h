@@ -29,6 +29,9 @@ struct StepResult
 
 	std::array<uint32_t, MOVE_COUNT> proposed{};  ///< indexed by Move
 	std::array<uint32_t, MOVE_COUNT> accepted{};
+	/** Pose refits of legs and tables (doc/sampler.md), counted apart so that the Move
+	 *  arrays keep their size (the map plugin serialises them). */
+	uint32_t refitProposed = 0, refitAccepted = 0;
 
 	/** The blackboard after the requested temperature index (figs. 1-2), if asked for. */
 	std::optional<model::HypothesisSet> snapshot;

@@ -32,6 +32,12 @@ class Blackboard
 	/** Links a leg to `table` (NONE: unlinks); the corner is the argmin of eq. 6. */
 	void setLegParent(Id leg, Id table);
 	void setShapeletParent(size_t shapelet, Id leg);
+	/** Moves table `id` to the pose (and size, texture) of `t`; its legs' corners are
+	 *  re-derived (argmin of eq. 6). */
+	void setTable(Id id, const Table& t);
+	/** Moves leg `id` to the pose (and size, texture) of `l`; keeps its parent, re-derives
+	 *  its corner. */
+	void setLeg(Id id, const Leg& l);
 
 	bool hasTable(Id id) const { return m_tables.alive(id); }
 	bool hasLeg(Id id) const { return m_legs.alive(id); }

@@ -1,0 +1,33 @@
+#pragma once
+#include <whiskermap/model/Leg.h>
+#include <whiskermap/model/ModelParams.h>
+#include <whiskermap/model/Table.h>
+#include <whiskermap/obs/Shapelet.h>
+
+#include <cstddef>
+
+namespace whiskermap::inference
+{
+/** Closed-form pose fits: minimisers of the quadratic parts of eqs. 6-7. Shared by the exact
+ *  oracle (doc/oracle.md) and the sampler's refit and pair-table moves (doc/sampler.md). */
+
+/** The square leg (side leg_width) best explaining `n` contacts, each on the face whose
+ *  outward normal matches its own, optionally under table `t`: yaw = mean of the normals'
+ *  (and the table's) yaws modulo 90 deg; centre = least squares of "each contact on its
+ *  face line" plus "near (qx, qy)" with weight `pull` (1: a table corner, same sigma_r;
+ *  tiny: only fixes the position along a face), then moved along each face so that the face
+ *  stays the contact's nearest (not beyond its end; for a contact inside the leg, nearer
+ *  its centre than the contact's depth). Texture: mean of the contacts' and the table's. */
+model::Leg fitLeg(
+	const model::ModelParams& p, const obs::Shapelet* const* contacts, size_t n, const model::Table* t,
+	double qx, double qy, double pull);
+
+/** The table of the known size (leg width and texture of `start`) best fitting `n` >= 1 legs
+ *  standing at `corners` (eq. 6, positions and yaws): yaw = the rigid (Procrustes) fit of
+ *  the corners to the leg centres, combined with the legs' yaws (mod 90 deg) in proportion
+ *  to their curvatures; centre = the corners' mean onto the legs' mean. With one leg the
+ *  yaw is the leg's, taken modulo 90 deg nearest to start.theta. */
+model::Table fitTable(
+	const model::ModelParams& p, const model::Table& start, const model::Leg* const* legs, const int* corners,
+	size_t n);
+}  // namespace whiskermap::inference

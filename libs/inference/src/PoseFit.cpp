@@ -1,0 +1,115 @@
+#include <whiskermap/core/Angles.h>
+#include <whiskermap/inference/PoseFit.h>
+#include <whiskermap/model/Densities.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace whiskermap::inference
+{
+namespace
+{
+double sq(double v) { return v * v; }
+}  // namespace
+
+model::Leg fitLeg(
+	const model::ModelParams& p, const obs::Shapelet* const* s, size_t n, const model::Table* t, double qx,
+	double qy, double pull)
+{
+	const double w = p.leg_width;
+	// Yaw: the mean (mod 90 deg) around each reference angle; keep the one of least cost.
+	double theta = t ? t->theta : 0, bestCost = std::numeric_limits<double>::infinity();
+	for (int ref = -1; ref < static_cast<int>(n); ref++)
+	{
+		if (ref < 0 && !t) continue;
+		const double a0 = ref < 0 ? t->theta : s[ref]->normal;
+		double sum = t ? core::angleDiff(t->theta, a0, M_PI_2) : 0;
+		int count = t ? 1 : 0;
+		for (size_t i = 0; i < n; i++) sum += core::angleDiff(s[i]->normal, a0, M_PI_2), count++;
+		const double th = a0 + sum / count;
+		double cost = t ? sq(core::angleDiff(t->theta, th, M_PI_2)) : 0;
+		for (size_t i = 0; i < n; i++) cost += sq(core::angleDiff(s[i]->normal, th, M_PI_2));
+		if (cost < bestCost) bestCost = cost, theta = th;
+	}
+	// Centre: each contact on the line of its face (outward normal u), plus the pull.
+	constexpr size_t MAX_CONTACTS = 64;
+	double ux[MAX_CONTACTS], uy[MAX_CONTACTS];
+	n = std::min(n, MAX_CONTACTS);
+	double a11 = pull, a12 = 0, a22 = pull, b1 = pull * qx, b2 = pull * qy;
+	for (size_t i = 0; i < n; i++)
+	{
+		const double f = s[i]->normal - core::angleDiff(s[i]->normal, theta, M_PI_2);
+		ux[i] = std::cos(f), uy[i] = std::sin(f);
+		const double d = ux[i] * s[i]->x + uy[i] * s[i]->y - w / 2;
+		a11 += ux[i] * ux[i], a12 += ux[i] * uy[i], a22 += uy[i] * uy[i], b1 += ux[i] * d, b2 += uy[i] * d;
+	}
+	const double det = a11 * a22 - a12 * a12;
+	double px = (a22 * b1 - a12 * b2) / det, py = (a11 * b2 - a12 * b1) / det;
+	// A contact must lie along its face less far from the face centre than its height h above
+	// the leg centre: else another face is nearer (OrientedRect::perimeter) and its normal
+	// is wrong. With h >= w/2 that is "not beyond the end of the face".
+	constexpr double MARGIN = 1e-4;
+	for (int round = 0; round < 3; round++)
+		for (size_t i = 0; i < n; i++)
+		{
+			const double a = -uy[i] * (s[i]->x - px) + ux[i] * (s[i]->y - py);  // along the face
+			const double h = ux[i] * (s[i]->x - px) + uy[i] * (s[i]->y - py);
+			const double half = std::clamp(h - MARGIN, 0.0, w / 2);
+			const double excess = a - std::clamp(a, -half, half);
+			px -= uy[i] * excess, py += ux[i] * excess;
+		}
+	// Contacts spread wider than the face cannot all lie on it: push the leg inward along the
+	// normal until each is nearer the face centre than its height (a slightly far contact is
+	// cheap; a contact taking the adjacent face costs its 90 deg normal error).
+	for (size_t i = 0; i < n; i++)
+	{
+		const double a = -uy[i] * (s[i]->x - px) + ux[i] * (s[i]->y - py);
+		const double h = ux[i] * (s[i]->x - px) + uy[i] * (s[i]->y - py);
+		const double push = std::abs(a) + MARGIN - h;
+		if (push > 0) px -= ux[i] * push, py -= uy[i] * push;
+	}
+	double texture = t ? t->texture : 0;
+	for (size_t i = 0; i < n; i++) texture += s[i]->texture;
+	model::Leg l;
+	l.x = px;
+	l.y = py;
+	l.theta = theta;
+	l.wx = l.wy = w;
+	l.texture = texture / static_cast<double>(n + (t ? 1 : 0));
+	return l;
+}
+
+model::Table fitTable(
+	const model::ModelParams& p, const model::Table& start, const model::Leg* const* legs, const int* corners,
+	size_t n)
+{
+	model::Table origin = start;  // corner offsets in the table frame
+	origin.x = origin.y = origin.theta = 0;
+	double ox[4], oy[4], mox = 0, moy = 0, mqx = 0, mqy = 0;
+	for (int c = 0; c < 4; c++) model::tableCorner(origin, c, p, ox[c], oy[c]);
+	for (size_t i = 0; i < n; i++)
+		mox += ox[corners[i]], moy += oy[corners[i]], mqx += legs[i]->x, mqy += legs[i]->y;
+	mox /= n, moy /= n, mqx /= n, mqy /= n;
+	// Procrustes: the rotation taking the centred corners onto the centred legs.
+	double dot = 0, cross = 0, spread = 0;
+	for (size_t i = 0; i < n; i++)
+	{
+		const double ax = ox[corners[i]] - mox, ay = oy[corners[i]] - moy;
+		const double bx = legs[i]->x - mqx, by = legs[i]->y - mqy;
+		dot += ax * bx + ay * by, cross += ax * by - ay * bx, spread += ax * ax + ay * ay;
+	}
+	const double procrustes = spread > 0 ? std::atan2(cross, dot) : start.theta;
+	// Both yaw terms are quadratic near the optimum: weight each by its curvature.
+	const double kPos = spread / sq(p.sigma_r), kYaw = 1 / sq(p.sigma_theta);
+	double yawSum = 0;
+	for (size_t i = 0; i < n; i++) yawSum += core::angleDiff(legs[i]->theta, procrustes, M_PI_2);
+	model::Table t = start;
+	t.theta = procrustes + kYaw * yawSum / (kPos + kYaw * static_cast<double>(n));
+	const double c = std::cos(t.theta), sn = std::sin(t.theta);
+	t.x = mqx - (c * mox - sn * moy);
+	t.y = mqy - (sn * mox + c * moy);
+	return t;
+}
+}  // namespace whiskermap::inference
