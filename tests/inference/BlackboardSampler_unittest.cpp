@@ -219,7 +219,7 @@ TEST(BlackboardSampler, RefitPlacesTheTable)
 		const Table& t = r.map.tables[0];
 		EXPECT_LT(std::hypot(t.x - truth.x, t.y - truth.y), 0.01) << "seed " << seed;
 		EXPECT_LT(std::abs(core::angleDiff(t.theta, truth.theta, M_PI)), core::deg2rad(1)) << "seed " << seed;
-		EXPECT_GT(r.refitAccepted, 0u);
+		EXPECT_GT(r.acceptedOf(Move::Refit), 0u);
 		expectPruned(r.map);
 	}
 }

@@ -25,7 +25,7 @@ namespace
 {
 using mrpt::img::TColor;
 const TColor TRUTH(0, 0, 200), ESTIMATE(200, 40, 40), POSES(150, 150, 150), CONTACTS(0, 150, 0);
-const char* MOVE_NAMES[] = {"priming", "death", "reparent", "child", "parent"};
+const char* MOVE_NAMES[inference::MOVE_COUNT] = {"priming", "death", "reparent", "child", "parent", "refit"};
 
 double percentile(std::vector<double> v, double q)
 {

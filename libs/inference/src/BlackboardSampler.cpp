@@ -95,14 +95,6 @@ bool BlackboardSampler::accept(Move m, double logOdds, double beta)
 	return yes;
 }
 
-bool BlackboardSampler::acceptRefit(double logOdds, double beta)
-{
-	m_result->refitProposed++;
-	const bool yes = draw(logOdds, beta);
-	m_result->refitAccepted += yes;
-	return yes;
-}
-
 bool BlackboardSampler::draw(double logOdds, double beta)
 {
 	if (greedy(beta)) return logOdds > 0;
@@ -468,7 +460,7 @@ void BlackboardSampler::proposeLegRefit(Id l, double beta)
 {
 	const Leg old = m_bb.leg(l);
 	double gain = 0;
-	if (refitInPlace(l, gain) && !acceptRefit(gain, beta)) m_bb.setLeg(l, old);
+	if (refitInPlace(l, gain) && !accept(Move::Refit, gain, beta)) m_bb.setLeg(l, old);
 }
 
 // Refit of a table: twice (fit the table to its legs that explain shapelets, then refit
@@ -507,7 +499,7 @@ void BlackboardSampler::proposeTableRefit(Id t, double beta)
 		moved.theta = now.theta;
 		m_bb.setLeg(l, moved);
 	}
-	if (valid && acceptRefit(model::logJoint(m_bb) - before, beta)) return;
+	if (valid && accept(Move::Refit, model::logJoint(m_bb) - before, beta)) return;
 	m_bb.setTable(t, old);
 	for (const auto& [l, saved] : m_savedLegs) m_bb.setLeg(l, saved);
 }

@@ -72,7 +72,6 @@ class BlackboardSampler
 	/** Counts the proposal and draws its acceptance from the annealed conditional; at
 	 *  beta = inf, accepts exactly the improvements. */
 	bool accept(Move m, double logOdds, double beta);
-	bool acceptRefit(double logOdds, double beta);
 	bool draw(double logOdds, double beta);
 	double uniform();
 	size_t pick(size_t n);

@@ -16,8 +16,9 @@ enum class Move : uint8_t
 	Reparent,  ///< replace a leg's parent table (or drop it)
 	Child,  ///< a missing leg at a table's empty corner; a nearby shapelet for a leg
 	Parent,  ///< a new table with the leg at one of its corners
+	Refit,  ///< a leg or table moved onto its closed-form fit (doc/sampler.md)
 };
-constexpr size_t MOVE_COUNT = 5;
+constexpr size_t MOVE_COUNT = 6;
 
 /** What one time step of the sampler found. */
 struct StepResult
@@ -29,10 +30,6 @@ struct StepResult
 
 	std::array<uint32_t, MOVE_COUNT> proposed{};  ///< indexed by Move
 	std::array<uint32_t, MOVE_COUNT> accepted{};
-	/** Pose refits of legs and tables (doc/sampler.md), counted apart so that the Move
-	 *  arrays keep their size (the map plugin serialises them). */
-	uint32_t refitProposed = 0, refitAccepted = 0;
-
 	/** The blackboard after the requested temperature index (figs. 1-2), if asked for. */
 	std::optional<model::HypothesisSet> snapshot;
 
