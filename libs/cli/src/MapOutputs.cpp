@@ -164,13 +164,11 @@ std::string MapOutputs::finish(double wallSeconds)
 	m_montage.save(m_out.path("montage.png"));
 
 	drawTruth(m_contacts, m_s.world);
-	size_t shown = 0;
-	for (const auto& o : m_map.objects())
-		if (o.support >= m_map.likelihoodOptions.min_support)
-			m_contacts.table(o.table, ESTIMATE, o.existence() >= 0.5 ? 3 : 1), shown++;
+	const auto shown = m_map.supported();
+	for (size_t i : shown) m_contacts.table(m_map.objects()[i].table, ESTIMATE, 2);
 	m_contacts.caption(
-		"consolidated map: " + std::to_string(shown) + " objects with support >= " +
-		std::to_string(m_map.likelihoodOptions.min_support) + " (red; thick: existence >= 0.5), contacts (green)" +
+		"consolidated map: " + std::to_string(shown.size()) + " objects with support >= " +
+		std::to_string(m_map.likelihoodOptions.min_support) + ", no overlaps (red), contacts (green)" +
 		(m_s.world ? ", truth (blue)" : ""));
 	m_contacts.save(m_out.path("map.png"));
 

@@ -9,6 +9,7 @@
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/maps/MapCsv.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -188,11 +189,34 @@ world::Table CHierarchicalObjectMap::toWorldTable(const model::Table& t) const
 		t.leg_width, t.texture};
 }
 
+std::vector<size_t> CHierarchicalObjectMap::supported() const
+{
+	// Objects with enough support, best supported first; one overlapping a better supported
+	// object is left out (no two tables overlap: the model's factor phi_c, eq. 16). This
+	// drops the mirror tables of ambiguous two-leg poses, which share legs with the truth.
+	std::vector<size_t> order;
+	for (size_t i = 0; i < objects().size(); i++)
+		if (objects()[i].support >= likelihoodOptions.min_support) order.push_back(i);
+	std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+		return objects()[a].support > objects()[b].support;
+	});
+	std::vector<size_t> kept;
+	std::vector<world::Obstacle> footprints;
+	for (size_t i : order)
+	{
+		const auto foot = objects()[i].table.footprint();
+		if (std::any_of(footprints.begin(), footprints.end(), [&](const auto& f) { return f.intersects(foot); }))
+			continue;
+		kept.push_back(i);
+		footprints.push_back(foot);
+	}
+	return kept;
+}
+
 std::vector<world::Table> CHierarchicalObjectMap::supportedTables() const
 {
 	std::vector<world::Table> tables;
-	for (const auto& o : objects())
-		if (o.support >= likelihoodOptions.min_support) tables.push_back(o.table);
+	for (size_t i : supported()) tables.push_back(objects()[i].table);
 	return tables;
 }
 
@@ -318,9 +342,9 @@ void CHierarchicalObjectMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& s
 {
 	using namespace mrpt::opengl;
 	const double h = renderOptions.table_height;
-	for (const auto& o : objects())
+	for (size_t i : supported())
 	{
-		if (o.support < likelihoodOptions.min_support) continue;
+		const auto& o = objects()[i];
 		const auto& t = o.table;
 		const float a = static_cast<float>(0.3 + 0.7 * o.existence());
 		auto obj = CSetOfObjects::Create();

@@ -105,8 +105,11 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	/** A model table as a full table of the known size, yaw in (-90, 90] degrees (it is the
 	 *  same table turned by 180). */
 	world::Table toWorldTable(const model::Table& t) const;
-	/** The tables of the objects with support >= likelihoodOptions.min_support: the map as
-	 *  used for likelihoods, pictures, exports and evaluation. */
+	/** The map as used for likelihoods, pictures, exports and evaluation: indices of the
+	 *  objects with support >= likelihoodOptions.min_support, best supported first, leaving
+	 *  out any that overlaps one already taken (no two tables overlap, eq. 16). */
+	std::vector<size_t> supported() const;
+	/** The tables of supported(). */
 	std::vector<world::Table> supportedTables() const;
 	/** Legs of supportedTables(), as solids. */
 	std::vector<world::Obstacle> mappedLegs() const;
