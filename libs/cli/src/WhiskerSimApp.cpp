@@ -52,7 +52,8 @@ int run(const Options& o)
 	const World w = World::load(o.world).tiled(o.tiles[0], o.tiles[1]);
 	const Robot robot = Robot::load(core::ConfigPaths::resolve(o.robot, "robots"));
 	const auto noise = NoisePreset::load(o.noise);
-	const auto once = o.path.empty() ? Trajectory::paperGrid(w, o.grid) : Trajectory::readPathFile(o.path);
+	const auto once = o.path.empty() ? Trajectory::paperGrid(w, o.grid * o.tiles[0], o.grid * o.tiles[1])
+									 : Trajectory::readPathFile(o.path);
 	std::vector<mrpt::poses::CPose2D> poses;
 	for (int k = 0; k < o.repeat; k++) poses.insert(poses.end(), once.begin(), once.end());
 	WhiskerSimulator sim(w, robot, noise, o.seed);
@@ -132,7 +133,7 @@ int WhiskerSimApp::main(int argc, char** argv)
 		   "paper-grid: N x N positions x 4 compass headings over the arena")
 		->check(CLI::IsMember({"paper-grid"}))
 		->capture_default_str();
-	app.add_option("--grid", o.grid, "N for paper-grid (default 10: 400 poses)")
+	app.add_option("--grid", o.grid, "N for paper-grid: N x N positions per tile (default 10: 400 poses per tile)")
 		->check(CLI::Range(1, 1000))
 		->capture_default_str();
 	app.add_option("--tiles", o.tiles, "NX NY: repeat the world NX x NY times (same density; for scaling runs)")

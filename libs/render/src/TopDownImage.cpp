@@ -1,18 +1,19 @@
 #include <whiskermap/core/Error.h>
 #include <whiskermap/render/TopDownImage.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
 namespace whiskermap::render
 {
-TopDownImage::TopDownImage(double x0, double x1, double y0, double y1, double pxPerMetre)
+TopDownImage::TopDownImage(double x0, double x1, double y0, double y1, double pxPerMetre, int maxSide)
 	: m_x0(x0),
 	  m_y1(y1),
-	  m_scale(pxPerMetre),
+	  m_scale(std::min(pxPerMetre, (maxSide - 40) / std::max(x1 - x0, y1 - y0))),
 	  m_img(
-		  static_cast<unsigned>(std::ceil((x1 - x0) * pxPerMetre)) + 40,
-		  static_cast<unsigned>(std::ceil((y1 - y0) * pxPerMetre)) + 40, mrpt::img::CH_RGB)
+		  static_cast<unsigned>(std::ceil((x1 - x0) * m_scale)) + 40,
+		  static_cast<unsigned>(std::ceil((y1 - y0) * m_scale)) + 40, mrpt::img::CH_RGB)
 {
 	m_img.filledRectangle(0, 0, m_img.getWidth() - 1, m_img.getHeight() - 1, {255, 255, 255});
 }

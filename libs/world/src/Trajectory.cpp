@@ -8,12 +8,14 @@
 
 namespace whiskermap::world
 {
-std::vector<mrpt::poses::CPose2D> Trajectory::paperGrid(const World& w, int n)
+std::vector<mrpt::poses::CPose2D> Trajectory::paperGrid(const World& w, int n) { return paperGrid(w, n, n); }
+
+std::vector<mrpt::poses::CPose2D> Trajectory::paperGrid(const World& w, int nx, int ny)
 {
 	std::vector<mrpt::poses::CPose2D> poses;
-	const double dx = (w.x_max - w.x_min) / n, dy = (w.y_max - w.y_min) / n;
-	for (int row = 0; row < n; row++)
-		for (int col = 0; col < n; col++)
+	const double dx = (w.x_max - w.x_min) / nx, dy = (w.y_max - w.y_min) / ny;
+	for (int row = 0; row < ny; row++)
+		for (int col = 0; col < nx; col++)
 			for (int h = 0; h < 4; h++)
 				poses.emplace_back(
 					w.x_min + (col + 0.5) * dx, w.y_min + (row + 0.5) * dy, h * M_PI / 2);

@@ -16,8 +16,9 @@ namespace whiskermap::render
 class TopDownImage
 {
    public:
-	/** The rectangle [x0, x1] x [y0, y1] (metres) at `pxPerMetre`, with a margin. */
-	TopDownImage(double x0, double x1, double y0, double y1, double pxPerMetre = 150);
+	/** The rectangle [x0, x1] x [y0, y1] (metres) at `pxPerMetre`, with a margin; the scale
+	 *  drops so that neither side exceeds `maxSide` pixels (large worlds). */
+	TopDownImage(double x0, double x1, double y0, double y1, double pxPerMetre = 150, int maxSide = 4000);
 
 	/** Walls of a world's arena. */
 	void arena(const world::World& w, mrpt::img::TColor c);

@@ -14,6 +14,8 @@ struct Trajectory
 	 *  row by row from (x_min, y_min), each visited at the four compass headings
 	 *  0, 90, 180, 270 degrees: 4 n^2 poses. */
 	static std::vector<mrpt::poses::CPose2D> paperGrid(const World& world, int n = 10);
+	/** The same with nx x ny positions (for non-square, e.g. tiled, arenas). */
+	static std::vector<mrpt::poses::CPose2D> paperGrid(const World& world, int nx, int ny);
 
 	/** A path file: one pose per line, `x y yaw_deg` (metres, degrees); blank lines and lines
 	 *  starting with '%' or '#' are skipped. Throws core::Error naming file and line. */
