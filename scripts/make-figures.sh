@@ -10,16 +10,16 @@ build=${1:-$root/build}
 work=${2:-$root/out/figures}
 map="$build/apps/whisker-map/whisker-map"
 world="$root/config/worlds/paper_arena.ini"
-pose=${SNAPSHOT_POSE:-172}
+pose=${SNAPSHOT_POSE:-159} temp=${SNAPSHOT_TEMPERATURE:-1}
 mkdir -p "$work" "$root/doc/img"
 for entry in 5:default 6:noiseless 7:very-noisy; do
   fig=${entry%%:*} preset=${entry#*:}
   echo "== fig. $fig: $preset"
   "$map" -i "$root/datasets/paper_arena/$preset.rawlog" --world "$world" --seed 1 \
-         --snapshot-pose "$pose" --snapshot-temperature 0 -o "$work/$preset"
+         --snapshot-pose "$pose" --snapshot-temperature "$temp" -o "$work/$preset"
   cp "$work/$preset/montage.png" "$root/doc/img/fig${fig}_montage_${preset}.png"
   cp "$work/$preset/map.png" "$root/doc/img/map_${preset}.png"
 done
-cp "$work/default/blackboard_pose${pose}_t0.png" "$root/doc/img/fig1_blackboard_hot.png"
+cp "$work/default/blackboard_pose${pose}_t${temp}.png" "$root/doc/img/fig1_blackboard_hot.png"
 cp "$work/default/blackboard_pose${pose}_map.png" "$root/doc/img/fig2_blackboard_map.png"
 echo "figures written to $root/doc/img"

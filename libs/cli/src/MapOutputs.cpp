@@ -160,15 +160,15 @@ std::string MapOutputs::finish(double wallSeconds)
 
 	const std::string source = std::filesystem::path(m_s.input).filename().string();
 	drawTruth(m_montage, m_s.world);
-	m_montage.caption(source + ": MAP tables of every pose (red), robot poses (grey)" + (m_s.world ? ", truth (blue)" : ""));
+	m_montage.caption(source + ": per-pose MAP tables (red), poses (grey)" + (m_s.world ? ", truth (blue)" : ""));
 	m_montage.save(m_out.path("montage.png"));
 
 	drawTruth(m_contacts, m_s.world);
 	const auto shown = m_map.supported();
 	for (size_t i : shown) m_contacts.table(m_map.objects()[i].table, ESTIMATE, 2);
 	m_contacts.caption(
-		"consolidated map: " + std::to_string(shown.size()) + " objects with support >= " +
-		std::to_string(m_map.likelihoodOptions.min_support) + ", no overlaps (red), contacts (green)" +
+		"map: " + std::to_string(shown.size()) + " tables, support >= " +
+		std::to_string(m_map.likelihoodOptions.min_support) + " (red), contacts (green)" +
 		(m_s.world ? ", truth (blue)" : ""));
 	m_contacts.save(m_out.path("map.png"));
 

@@ -333,8 +333,8 @@ std::string CHierarchicalObjectMap::asString() const
 	std::ostringstream s;
 	const size_t supported = supportedTables().size();
 	s << "CHierarchicalObjectMap: " << m_steps << " sweeps inserted, " << m_shapelets.size()
-	  << " shapelets kept, " << objects().size() << " objects (" << supported << " with support >= "
-	  << likelihoodOptions.min_support << ")";
+	  << " shapelets kept, " << objects().size() << " objects, " << supported
+	  << " in the map as used (support >= " << likelihoodOptions.min_support << ", no overlaps)";
 	return s.str();
 }
 
