@@ -112,6 +112,7 @@ void CHierarchicalObjectMap::TLikelihoodOptions::loadFromConfigFile(
 {
 	readSection(c, s, [&](core::IniSection& sec) {
 		sweep.sigma_contact = sec.number("sigma_contact", sweep.sigma_contact, 1e-6, 10);
+		sweep.sigma_normal = core::deg2rad(sec.number("sigma_normal_deg", core::rad2deg(sweep.sigma_normal), 0.01, 180));
 		sweep.p_unexplained = sec.number("p_unexplained", sweep.p_unexplained, 1e-9, 1);
 		sweep.p_miss = sec.number("p_miss", sweep.p_miss, 1e-9, 1);
 		min_support = static_cast<uint32_t>(sec.integer("min_support", min_support, 0, 1000000));
@@ -120,7 +121,8 @@ void CHierarchicalObjectMap::TLikelihoodOptions::loadFromConfigFile(
 
 void CHierarchicalObjectMap::TLikelihoodOptions::dumpToTextStream(std::ostream& out) const
 {
-	out << "sigma_contact=" << sweep.sigma_contact << "\np_unexplained=" << sweep.p_unexplained
+	out << "sigma_contact=" << sweep.sigma_contact << "\nsigma_normal_deg=" << core::rad2deg(sweep.sigma_normal)
+		<< "\np_unexplained=" << sweep.p_unexplained
 		<< "\np_miss=" << sweep.p_miss << "\nmin_support=" << min_support << "\n";
 }
 
@@ -220,13 +222,21 @@ std::vector<world::Table> CHierarchicalObjectMap::supportedTables() const
 	return tables;
 }
 
-std::vector<world::Obstacle> CHierarchicalObjectMap::mappedLegs() const
+const std::vector<world::Obstacle>& CHierarchicalObjectMap::mappedLegs() const
 {
-	std::vector<world::Obstacle> legs;
-	const auto tables = supportedTables();
-	for (size_t i = 0; i < tables.size(); i++)
-		for (int k = 0; k < 4; k++) legs.push_back(tables[i].leg(k, static_cast<int>(i)));
-	return legs;
+	// Cached: a particle filter scores every particle against the same map.
+	auto& c = m_legCache;
+	const std::lock_guard<std::mutex> lock(c.mutex);
+	if (!c.valid || c.support != likelihoodOptions.min_support)
+	{
+		c.legs.clear();
+		const auto tables = supportedTables();
+		for (size_t i = 0; i < tables.size(); i++)
+			for (int k = 0; k < 4; k++) c.legs.push_back(tables[i].leg(k, static_cast<int>(i)));
+		c.valid = true;
+		c.support = likelihoodOptions.min_support;
+	}
+	return c.legs;
 }
 
 bool CHierarchicalObjectMap::isEmpty() const { return m_steps == 0 && objects().empty(); }
@@ -243,6 +253,7 @@ void CHierarchicalObjectMap::internal_clear()
 	m_lastRecord = {};
 	m_lastInput = {};
 	m_steps = 0;
+	m_legCache.invalidate();
 }
 
 bool CHierarchicalObjectMap::internal_insertObservation(
@@ -291,6 +302,7 @@ void CHierarchicalObjectMap::integrateStep(TStepInput in, inference::StepResult 
 	m_lastRecord = std::move(rec);
 	m_lastInput = std::move(in);
 	m_lastStep = std::move(result);
+	m_legCache.invalidate();
 }
 
 model::ModelParams CHierarchicalObjectMap::modelFor(const obs::TSensorNoise& noise) const
@@ -415,7 +427,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	out.WriteAs<uint32_t>(insertionOptions.memory_size);
 	out << insertionOptions.seed << insertionOptions.use_sensor_noise << insertionOptions.keep_history
 		<< c.merge_distance << c.merge_angle << c.evidence_margin;
-	out << likelihoodOptions.sweep.sigma_contact << likelihoodOptions.sweep.p_unexplained
+	out << likelihoodOptions.sweep.sigma_contact << likelihoodOptions.sweep.sigma_normal
+		<< likelihoodOptions.sweep.p_unexplained
 		<< likelihoodOptions.sweep.p_miss << likelihoodOptions.min_support << renderOptions.table_height
 		<< renderOptions.top_thickness << renderOptions.octomap_resolution;
 	// Content.
@@ -453,7 +466,8 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 			insertionOptions.memory_size = in.ReadAs<uint32_t>();
 			in >> insertionOptions.seed >> insertionOptions.use_sensor_noise >> insertionOptions.keep_history >>
 				c.merge_distance >> c.merge_angle >> c.evidence_margin;
-			in >> likelihoodOptions.sweep.sigma_contact >> likelihoodOptions.sweep.p_unexplained >>
+			in >> likelihoodOptions.sweep.sigma_contact >> likelihoodOptions.sweep.sigma_normal >>
+				likelihoodOptions.sweep.p_unexplained >>
 				likelihoodOptions.sweep.p_miss >> likelihoodOptions.min_support >>
 				renderOptions.table_height >> renderOptions.top_thickness >> renderOptions.octomap_resolution;
 			in >> m_steps;

@@ -1,3 +1,4 @@
+#include <whiskermap/core/Angles.h>
 #include <whiskermap/maps/SweepLikelihood.h>
 #include <whiskermap/world/WhiskerContact.h>
 
@@ -29,8 +30,10 @@ double SweepLikelihood::logLikelihood(
 			const Eigen::Vector2d seen =
 				pivot + w.r * Eigen::Vector2d(std::cos(yaw + w.angle), std::sin(yaw + w.angle));
 			const double d2 = (seen - predicted->point).squaredNorm();
+			const double a = core::wrapToPi(yaw + w.normal - predicted->normal);
 			ll += std::log(
-				(1 - o.p_unexplained) * std::exp(-d2 / (2 * o.sigma_contact * o.sigma_contact)) +
+				(1 - o.p_unexplained) * std::exp(-d2 / (2 * o.sigma_contact * o.sigma_contact) -
+												 a * a / (2 * o.sigma_normal * o.sigma_normal)) +
 				o.p_unexplained);
 		}
 		else if (w.touched)

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <memory>
+#include <mutex>
 
 namespace whiskermap::maps
 {
@@ -111,8 +112,8 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	std::vector<size_t> supported() const;
 	/** The tables of supported(). */
 	std::vector<world::Table> supportedTables() const;
-	/** Legs of supportedTables(), as solids. */
-	std::vector<world::Obstacle> mappedLegs() const;
+	/** Legs of supportedTables(), as solids (cached until the map changes; thread-safe). */
+	const std::vector<world::Obstacle>& mappedLegs() const;
 
 	// See base class docs
 	bool isEmpty() const override;
@@ -143,6 +144,27 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	uint64_t m_steps = 0;
 	int m_snapshotTemperature = -1;
 	StepSolver m_solver;
+	/** mappedLegs() cache; a copy starts empty (invalid). */
+	struct LegCache
+	{
+		std::vector<world::Obstacle> legs;
+		bool valid = false;
+		uint32_t support = 0;
+		std::mutex mutex;
+		LegCache() = default;
+		LegCache(const LegCache&) {}
+		LegCache& operator=(const LegCache&)
+		{
+			invalidate();
+			return *this;
+		}
+		void invalidate()
+		{
+			const std::lock_guard<std::mutex> lock(mutex);
+			valid = false;
+		}
+	};
+	mutable LegCache m_legCache;
 	/** The model a sweep with this noise is scored with. */
 	model::ModelParams modelFor(const obs::TSensorNoise& noise) const;
 
