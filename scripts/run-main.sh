@@ -11,5 +11,5 @@ out=${OUT_DIR:-$root/out}
 mkdir -p "$out"
 # Map the shipped default-noise paper-arena dataset and evaluate it against the truth.
 "$build/apps/whisker-map/whisker-map" -i "$root/datasets/paper_arena/default.rawlog" \
-  --world "$root/config/worlds/paper_arena.ini" --snapshot-pose 85 -o "$out/paper_arena_default"
+  --world "$root/config/worlds/paper_arena.ini" --snapshot-pose 159 --snapshot-temperature 1 -o "$out/paper_arena_default"
 echo "run-main: outputs in $out/paper_arena_default (see doc/outputs.md)"
