@@ -50,6 +50,7 @@ TEST(SamplerParams, ShippedConfigEqualsBuiltInDefaults)
 	EXPECT_EQ(f.coldest_sweeps, d.coldest_sweeps);
 	EXPECT_EQ(f.polish_sweeps, d.polish_sweeps);
 	EXPECT_EQ(f.existing_leg_probability, d.existing_leg_probability);
+	EXPECT_EQ(f.merge_probability, d.merge_probability);
 	EXPECT_EQ(f.leg_position_noise, d.leg_position_noise);
 	EXPECT_EQ(f.leg_angle_noise, d.leg_angle_noise);
 }

@@ -51,6 +51,7 @@ StepResult BlackboardSampler::step(
 	m_bb = m_best;
 	for (int i = 0; i < m_params.polish_sweeps; i++)
 	{
+		m_searchPoses = i + 1 == m_params.polish_sweeps;  // the pose search: last sweep only
 		sweep(std::numeric_limits<double>::infinity());
 		checkpoint(result);
 	}
@@ -172,6 +173,7 @@ void BlackboardSampler::visitLeg(Id l, double beta)
 	if ((all || (u >= m_params.r2 && u < m_params.r3)) && m_bb.hasLeg(l)) proposeLegChild(l, beta);
 	if ((all || (u >= m_params.r3 && u < m_params.r4)) && m_bb.hasLeg(l)) proposeLegRefit(l, beta);
 	if ((all || u >= m_params.r4) && m_bb.hasLeg(l)) proposeTableForLeg(l, beta);
+	if (all && m_searchPoses && m_bb.hasLeg(l)) searchLegPose(l);
 }
 
 // Death of a table takes the legs it invented (they explain nothing; the prune would remove
@@ -214,6 +216,21 @@ void BlackboardSampler::proposeLegChild(Id l, double beta)
 		proposeSplit(static_cast<size_t>(m_candidates[pick(m_candidates.size())]), beta);
 		if (!greedy(beta)) return;
 	}
+	if (greedy(beta) || uniform() < m_params.merge_probability)
+	{
+		mergeCandidates(l);
+		if (greedy(beta))
+		{
+			for (size_t i = 0; i < m_mergeable.size() && m_bb.hasLeg(l); i++)
+				if (m_bb.hasLeg(m_mergeable[i])) proposeMerge(l, m_mergeable[i], beta);
+			if (!m_bb.hasLeg(l)) return;
+		}
+		else if (!m_mergeable.empty())
+		{
+			proposeMerge(l, m_mergeable[pick(m_mergeable.size())], beta);
+			return;
+		}
+	}
 	const auto& leg = m_bb.leg(l);
 	const model::OrientedRect r = model::legRect(leg);
 	m_candidates.clear();
@@ -244,6 +261,68 @@ void BlackboardSampler::proposeLink(size_t s, Id l, Move m, double beta)
 	}
 	m_bb.setLeg(l, old);
 	m_bb.setShapeletParent(s, from);
+}
+
+void BlackboardSampler::mergeCandidates(Id l)
+{
+	m_mergeable.clear();
+	const Leg& leg = m_bb.leg(l);
+	// Two contacts one leg explains are within its diagonal plus two gates of each other, so
+	// the leg centres are within that plus one half-diagonal each.
+	const double w = m_model.leg_width, reach = 2 * w * std::sqrt(2.0) + 2 * m_model.parent_gate;
+	m_bb.forEachLegNear(leg.x, leg.y, reach, [&](Id o) {
+		if (o != l && explains(o)) m_mergeable.push_back(o);
+	});
+}
+
+// Merge: all contacts of `other` move to l, other is removed (its local log-odds, eq. 20,
+// with its contacts unlinked), the contacts link to l one by one, and l refits to all its
+// contacts. Exact local change of logJoint; undone exactly on rejection.
+bool BlackboardSampler::proposeMerge(Id l, Id other, double beta)
+{
+	m_moved.clear();
+	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
+		if (m_bb.shapeletParent(s) == other) m_moved.push_back(s);
+	if (m_moved.empty()) return false;
+	const Leg oldL = m_bb.leg(l), oldOther = m_bb.leg(other);
+	double gain = -model::logOddsLeg(m_bb, other);
+	m_bb.removeLeg(other);
+	for (const size_t s : m_moved)
+	{
+		gain += model::logShapeletLinkGain(m_bb, s, l);
+		m_bb.setShapeletParent(s, l);
+	}
+	const bool fitted = refitInPlace(l, gain);
+	if (fitted && accept(Move::Child, gain, beta)) return true;
+	m_bb.setLeg(l, oldL);
+	const Id back = m_bb.addLeg(oldOther);
+	for (const size_t s : m_moved) m_bb.setShapeletParent(s, back);
+	return false;
+}
+
+// Greedy compass search on (x, y, yaw) of leg l, on its exact local log-odds (eq. 20: the
+// board without l does not depend on its pose), from a quarter leg width down to 0.1 mm.
+void BlackboardSampler::searchLegPose(Id l)
+{
+	Leg best = m_bb.leg(l);
+	const double start = model::logOddsLeg(m_bb, l);
+	double value = start;
+	for (double step = m_model.leg_width / 4; step > 1e-4; step /= 2)
+		for (bool improved = true; improved;)
+		{
+			improved = false;
+			for (int k = 0; k < 6; k++)
+			{
+				Leg c = best;
+				(k < 2 ? c.x : k < 4 ? c.y : c.theta) += (k % 2 ? -1 : 1) * (k < 4 ? step : 10 * step);
+				m_bb.setLeg(l, c);
+				const double v = model::logOddsLeg(m_bb, l);
+				if (v > value + 1e-9) value = v, best = c, improved = true;
+			}
+			m_bb.setLeg(l, best);
+		}
+	m_result->proposed[static_cast<size_t>(Move::Refit)]++;
+	m_result->accepted[static_cast<size_t>(Move::Refit)] += value > start;
 }
 
 // Q(ch(T) | T): the missing leg at a uniformly chosen empty corner, exactly as eq. 6 expects.

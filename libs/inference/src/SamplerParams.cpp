@@ -16,6 +16,7 @@ SamplerParams SamplerParams::fromIni(core::IniSection& sec)
 	p.coldest_sweeps = static_cast<int>(sec.integer("coldest_sweeps", 1, 1000));
 	p.polish_sweeps = static_cast<int>(sec.integer("polish_sweeps", 0, 1000));
 	p.existing_leg_probability = sec.number("existing_leg_probability", 0, 1);
+	p.merge_probability = sec.number("merge_probability", 0, 1);
 	p.leg_position_noise = sec.number("leg_position_noise", 0, 1);
 	p.leg_angle_noise = sec.number("leg_angle_noise", 0, 1);
 	sec.finish();

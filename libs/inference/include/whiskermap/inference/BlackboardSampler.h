@@ -39,6 +39,15 @@ class BlackboardSampler
 	void proposeLegChild(model::Id l, double beta);
 	void proposeLink(size_t shapelet, model::Id l, Move m, double beta);
 	void proposeSplit(size_t shapelet, double beta);
+	/** Merge: every contact of leg `other` moves to leg `l`, `other` is removed and `l`
+	 *  refits to all its contacts (the reverse of splits). Exact change of logJoint; undone
+	 *  on rejection. False if not proposed (nothing to move, or the fit leaves the gate). */
+	bool proposeMerge(model::Id l, model::Id other, double beta);
+	/** Fills m_mergeable with the legs other than `l` that explain a shapelet and stand near
+	 *  enough for one leg to explain both legs' contacts. */
+	void mergeCandidates(model::Id l);
+	/** Greedy compass search of leg l's pose on its exact local log-odds (the polish). */
+	void searchLegPose(model::Id l);
 	/** A new free leg for shapelet s, with s on its face (Q(pa(S)), doc/sampler.md). */
 	model::Leg newLegFor(size_t s);
 	void proposeTableChild(model::Id t, double beta);
@@ -85,11 +94,13 @@ class BlackboardSampler
 	model::Blackboard m_bb;
 	std::mt19937_64 m_rng;
 	StepResult* m_result = nullptr;
+	bool m_searchPoses = false;  ///< the last polish sweep also searches leg poses
 
 
 	// Scratch, reused across calls (no per-move heap churn once warm).
 	std::vector<model::Id> m_tableOrder, m_legOrder, m_candidates, m_oldParents,
-		m_abandoned, m_orphans;
+		m_abandoned, m_orphans, m_mergeable;
+	std::vector<size_t> m_moved;
 	model::Blackboard m_backup;  ///< state before a compound move, to undo it
 	model::Blackboard m_best;  ///< the best board at the coldest temperature (the MAP)
 	std::vector<const obs::Shapelet*> m_contacts;

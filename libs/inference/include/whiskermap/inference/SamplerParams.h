@@ -23,6 +23,9 @@ struct SamplerParams
 	/** Priming: probability of proposing an existing leg near the shapelet (when there is
 	 *  one) rather than a new leg. */
 	double existing_leg_probability = 0.5;
+	/** Leg child move: probability of proposing a merge with a nearby leg (when there is
+	 *  one and no split was drawn) rather than a link of one nearby contact. */
+	double merge_probability = 0.5;
 	double leg_position_noise = 0.003;  ///< std-dev of a new leg's centre, metres
 	double leg_angle_noise = 0.02;  ///< std-dev of a new leg's yaw, radians
 
