@@ -43,6 +43,7 @@ RawlogWriter::~RawlogWriter()
 void RawlogWriter::write(
 	const mrpt::poses::CPose2D& pose, const obs::CObservationWhiskerContacts& sweep)
 {
+	sweep.validate();  // nothing invalid is ever written
 	auto arch = mrpt::serialization::archiveFrom(m_out);
 	if (m_format == Format::Observations)
 	{

@@ -31,6 +31,7 @@ class RawlogWriter
 	RawlogWriter(const std::string& rawlogPath, Format format);
 	~RawlogWriter();  ///< removes the temporary files if close() was not reached
 
+	/** Appends a sweep (validated first: throws core::Error on a bad value). */
 	void write(const mrpt::poses::CPose2D& pose, const obs::CObservationWhiskerContacts& sweep);
 	/** Flushes and renames both files into place. */
 	void close();
