@@ -112,10 +112,9 @@ double seconds(F&& f)
 }
 }  // namespace
 
-/** Measured 92.3% (240/260) with two-leg contact moves and multi-start pose searches in the
- *  polish (88.1% before them, 73.8% before the merge move, 13.5% before any pose move);
- *  floor with a margin. */
-constexpr double MIN_AGREEMENT_PERCENT = 89.0;
+/** Measured 88.1% (229/260) with the merge move and the polish's leg pose search (73.8%
+ *  before them, 13.5% before any pose move); floor with a margin. */
+constexpr double MIN_AGREEMENT_PERCENT = 85.0;
 
 TEST(OracleAgreement, SamplerFindsTheExactMap)
 {

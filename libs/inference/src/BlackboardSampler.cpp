@@ -213,15 +213,8 @@ void BlackboardSampler::proposeLegChild(Id l, double beta)
 		if (m_bb.shapeletParent(s) == l) m_candidates.push_back(static_cast<Id>(s));
 	if (m_candidates.size() >= 2 && (greedy(beta) || uniform() < 0.5))
 	{
-		if (!greedy(beta))
-		{
-			proposeSplit(static_cast<size_t>(m_candidates[pick(m_candidates.size())]), beta);
-			return;
-		}
-		// The polish offers each contact's split (while the leg keeps two or more).
-		const std::vector<size_t> own(m_candidates.begin(), m_candidates.end());
-		for (const size_t s : own)
-			if (m_bb.shapeletParent(s) == l && !single(l)) proposeSplit(s, beta);
+		proposeSplit(static_cast<size_t>(m_candidates[pick(m_candidates.size())]), beta);
+		if (!greedy(beta)) return;
 	}
 	if (greedy(beta) || uniform() < m_params.merge_probability)
 	{
@@ -246,15 +239,7 @@ void BlackboardSampler::proposeLegChild(Id l, double beta)
 			r.perimeter(m_bb.shapelets()[s].x, m_bb.shapelets()[s].y).distance <= m_model.parent_gate)
 			m_candidates.push_back(static_cast<Id>(s));
 	if (m_candidates.empty()) return;
-	if (!greedy(beta))
-	{
-		proposeLink(static_cast<size_t>(m_candidates[pick(m_candidates.size())]), l, Move::Child, beta);
-		return;
-	}
-	// The polish offers every nearby contact (proposeLink reuses m_candidates: copy).
-	const std::vector<size_t> near(m_candidates.begin(), m_candidates.end());
-	for (const size_t s : near)
-		if (m_bb.hasLeg(l) && m_bb.shapeletParent(s) != l) proposeLink(s, l, Move::Child, beta);
+	proposeLink(static_cast<size_t>(m_candidates[pick(m_candidates.size())]), l, Move::Child, beta);
 }
 
 // Shapelet s moves to leg l, l refits to its contacts (and corner), and the leg s leaves is
@@ -264,26 +249,17 @@ void BlackboardSampler::proposeLink(size_t s, Id l, Move m, double beta)
 {
 	const Id from = m_bb.shapeletParent(s);
 	const Leg old = m_bb.leg(l);
-	const Leg oldFrom = from != NONE ? m_bb.leg(from) : Leg{};
 	double gain = model::logShapeletLinkGain(m_bb, s, l) - model::logShapeletLinkGain(m_bb, s, from);
 	m_bb.setShapeletParent(s, l);
 	refitInPlace(l, gain);
 	const bool drop = from != NONE && m_bb.leg(from).parent == NONE && !explains(from);
 	if (drop) gain -= model::logOddsLeg(m_bb, from);
-	// A move between two legs: the leg the contact left refits to the contacts it keeps.
-	else if (from != NONE && explains(from)) refitInPlace(from, gain);
-	if (greedy(beta) && gain <= 0)
-	{
-		gain += searchFromContacts(l);
-		if (!drop && from != NONE) gain += searchFromContacts(from);
-	}
 	if (accept(m, gain, beta))
 	{
 		if (drop) m_bb.removeLeg(from);
 		return;
 	}
 	m_bb.setLeg(l, old);
-	if (from != NONE) m_bb.setLeg(from, oldFrom);
 	m_bb.setShapeletParent(s, from);
 }
 
@@ -317,9 +293,6 @@ bool BlackboardSampler::proposeMerge(Id l, Id other, double beta)
 		m_bb.setShapeletParent(s, l);
 	}
 	const bool fitted = refitInPlace(l, gain);
-	// The polish judges the merged leg at its searched pose: contacts at the ends of opposite
-	// or adjacent faces (a whisker on a leg's corner) are beyond the closed form.
-	if (fitted && greedy(beta) && gain <= 0) gain += searchFromContacts(l);
 	if (fitted && accept(Move::Child, gain, beta)) return true;
 	m_bb.setLeg(l, oldL);
 	const Id back = m_bb.addLeg(oldOther);
@@ -330,39 +303,6 @@ bool BlackboardSampler::proposeMerge(Id l, Id other, double beta)
 // Greedy compass search on (x, y, yaw) of leg l, on its exact local log-odds (eq. 20: the
 // board without l does not depend on its pose), from a quarter leg width down to 0.1 mm.
 void BlackboardSampler::searchLegPose(Id l)
-{
-	const double gain = compassSearch(l);
-	m_result->proposed[static_cast<size_t>(Move::Refit)]++;
-	m_result->accepted[static_cast<size_t>(Move::Refit)] += gain > 0;
-}
-
-// The compass search from the leg's pose and from each contact's own placement (the contact
-// mid-face, the leg's yaw its normal), as the oracle's free-leg search: the log-odds has
-// plateaus and ridges where a contact changes face, which one start cannot always leave.
-double BlackboardSampler::searchFromContacts(Id l)
-{
-	const Leg start = m_bb.leg(l);
-	const double before = model::logOddsLeg(m_bb, l);
-	double gain = compassSearch(l);
-	Leg best = m_bb.leg(l);
-	const double w = m_model.leg_width;
-	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
-	{
-		if (m_bb.shapeletParent(s) != l) continue;
-		const obs::Shapelet& sh = m_bb.shapelets()[s];
-		Leg c = start;
-		c.x = sh.x - std::cos(sh.normal) * w / 2;
-		c.y = sh.y - std::sin(sh.normal) * w / 2;
-		c.theta = sh.normal;
-		m_bb.setLeg(l, c);
-		const double g = model::logOddsLeg(m_bb, l) - before + compassSearch(l);
-		if (g > gain + 1e-9) gain = g, best = m_bb.leg(l);
-	}
-	m_bb.setLeg(l, best);
-	return gain;
-}
-
-double BlackboardSampler::compassSearch(Id l)
 {
 	Leg best = m_bb.leg(l);
 	const double start = model::logOddsLeg(m_bb, l);
@@ -381,7 +321,8 @@ double BlackboardSampler::compassSearch(Id l)
 			}
 			m_bb.setLeg(l, best);
 		}
-	return value - start;
+	m_result->proposed[static_cast<size_t>(Move::Refit)]++;
+	m_result->accepted[static_cast<size_t>(Move::Refit)] += value > start;
 }
 
 // Q(ch(T) | T): the missing leg at a uniformly chosen empty corner, exactly as eq. 6 expects.
@@ -470,13 +411,6 @@ void BlackboardSampler::proposeTableForLeg(Id l, double beta)
 	}
 	m_bb.removeTable(id);
 	for (size_t i = 0; i < m_candidates.size(); i++) m_bb.setLegParent(m_candidates[i], m_oldParents[i]);
-}
-
-bool BlackboardSampler::single(Id l) const
-{
-	size_t n = 0;
-	for (size_t s = 0; s < m_bb.shapelets().size(); s++) n += m_bb.shapeletParent(s) == l;
-	return n < 2;
 }
 
 bool BlackboardSampler::explains(Id l) const

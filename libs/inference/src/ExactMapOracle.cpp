@@ -164,16 +164,7 @@ class Search
 					cy += m_s[i].y - std::sin(m_s[i].normal) * m_p.leg_width / 2, n++;
 		std::vector<Leg> seeds{closedForm(mask, nullptr, cx / n, cy / n, WEAK)};
 		for (size_t i = 0; i < m_s.size(); i++)
-			if (mask >> i & 1)
-			{
-				seeds.push_back(closedForm(1u << i, nullptr, 0, 0, WEAK));
-				// The contact mid-face, the leg's yaw its normal (the sampler's polish start).
-				Leg mid = seeds.back();
-				mid.x = m_s[i].x - std::cos(m_s[i].normal) * m_p.leg_width / 2;
-				mid.y = m_s[i].y - std::sin(m_s[i].normal) * m_p.leg_width / 2;
-				mid.theta = m_s[i].normal;
-				seeds.push_back(mid);
-			}
+			if (mask >> i & 1) seeds.push_back(closedForm(1u << i, nullptr, 0, 0, WEAK));
 		for (Leg l : seeds)
 		{
 			l.texture = seeds[0].texture;

@@ -48,10 +48,6 @@ class BlackboardSampler
 	void mergeCandidates(model::Id l);
 	/** Greedy compass search of leg l's pose on its exact local log-odds (the polish). */
 	void searchLegPose(model::Id l);
-	/** That search; returns the gain of logJoint (leaves the leg at the best pose found). */
-	double compassSearch(model::Id l);
-	/** The best of that search from the leg's pose and from each of its contacts' placements. */
-	double searchFromContacts(model::Id l);
 	/** A new free leg for shapelet s, with s on its face (Q(pa(S)), doc/sampler.md). */
 	model::Leg newLegFor(size_t s);
 	void proposeTableChild(model::Id t, double beta);
@@ -62,8 +58,6 @@ class BlackboardSampler
 	double alongFace(size_t shapelet);
 	/** True if leg `l` explains a shapelet. */
 	bool explains(model::Id l) const;
-	/** True if leg `l` explains fewer than two shapelets. */
-	bool single(model::Id l) const;
 	/** True if a leg of `table` not in `except` explains a shapelet. */
 	bool hasSupportedLeg(model::Id table, const std::vector<model::Id>& except) const;
 	/** Removes `table` and then those of its legs that explain no shapelet (the prune would);
