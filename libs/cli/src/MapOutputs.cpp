@@ -164,10 +164,10 @@ std::string MapOutputs::finish(double wallSeconds)
 	m_montage.save(m_out.path("montage.png"));
 
 	drawTruth(m_contacts, m_s.world);
-	const auto shown = m_map.supported();
-	for (size_t i : shown) m_contacts.table(m_map.objects()[i].table, ESTIMATE, 2);
+	const auto mapped = m_map.supportedTables();  // the map as used, computed once
+	for (const auto& t : mapped) m_contacts.table(t, ESTIMATE, 2);
 	m_contacts.caption(
-		"map: " + std::to_string(shown.size()) + " tables, support >= " +
+		"map: " + std::to_string(mapped.size()) + " tables, support >= " +
 		std::to_string(m_map.likelihoodOptions.min_support) + " (red), contacts (green)" +
 		(m_s.world ? ", truth (blue)" : ""));
 	m_contacts.save(m_out.path("map.png"));
@@ -175,7 +175,7 @@ std::string MapOutputs::finish(double wallSeconds)
 	writeScene(m_out.path("map.3Dscene"));
 	const auto& ro = m_map.renderOptions;
 	render::OcTreeExport::write(
-		m_map.supportedTables(), {ro.octomap_resolution, ro.table_height, ro.top_thickness}, m_out.path("map.bt"));
+		mapped, {ro.octomap_resolution, ro.table_height, ro.top_thickness}, m_out.path("map.bt"));
 	if (m_s.simpleMap)
 	{
 		mrpt::maps::CSimpleMap sm;
@@ -192,7 +192,7 @@ std::string MapOutputs::finish(double wallSeconds)
 	if (m_s.world)
 	{
 		eval::EvalReport r;
-		r.map = eval::MapEvaluation::compute(m_s.world->tables, m_map.supportedTables(), r.options);
+		r.map = eval::MapEvaluation::compute(m_s.world->tables, mapped, r.options);
 		r.perPose = m_eval->result();
 		r.identifiability =
 			eval::Identifiability::of(*m_s.world, m_kept, eval::Identifiability::defaultGate(m_kept));
@@ -202,11 +202,12 @@ std::string MapOutputs::finish(double wallSeconds)
 		f << metricsJson;
 		if (!f) throw core::Error("metrics.json: write failed");
 	}
-	writeSummary(m_out.path("summary.json"), wallSeconds, metricsJson);
+	writeSummary(m_out.path("summary.json"), wallSeconds, mapped.size(), metricsJson);
 	return text;
 }
 
-void MapOutputs::writeSummary(const std::string& path, double wallSeconds, const std::string& metricsJson) const
+void MapOutputs::writeSummary(
+	const std::string& path, double wallSeconds, size_t mapped, const std::string& metricsJson) const
 {
 	double totalMs = 0;
 	uint64_t proposals = 0;
@@ -224,7 +225,7 @@ void MapOutputs::writeSummary(const std::string& path, double wallSeconds, const
 				  m_steps ? double(m_tables) / m_steps : 0.0, m_maxTables);
 	f << buf;
 	f << "  \"map_objects\": " << m_map.objects().size()
-	  << ",\n  \"map_objects_supported\": " << m_map.supportedTables().size() << ",\n";
+	  << ",\n  \"map_objects_supported\": " << mapped << ",\n";
 	f << "  \"moves\": {";
 	for (size_t k = 0; k < inference::MOVE_COUNT; k++)
 		f << (k ? ", " : "") << "\"" << MOVE_NAMES[k] << "\": {\"proposed\": " << m_map.proposed()[k]

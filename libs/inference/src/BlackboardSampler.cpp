@@ -306,21 +306,11 @@ void BlackboardSampler::searchLegPose(Id l)
 {
 	Leg best = m_bb.leg(l);
 	const double start = model::logOddsLeg(m_bb, l);
-	double value = start;
-	for (double step = m_model.leg_width / 4; step > 1e-4; step /= 2)
-		for (bool improved = true; improved;)
-		{
-			improved = false;
-			for (int k = 0; k < 6; k++)
-			{
-				Leg c = best;
-				(k < 2 ? c.x : k < 4 ? c.y : c.theta) += (k % 2 ? -1 : 1) * (k < 4 ? step : 10 * step);
-				m_bb.setLeg(l, c);
-				const double v = model::logOddsLeg(m_bb, l);
-				if (v > value + 1e-9) value = v, best = c, improved = true;
-			}
-			m_bb.setLeg(l, best);
-		}
+	const double value = compassSearch(best, m_model.leg_width, start, 1e-9, [&](const Leg& c) {
+		m_bb.setLeg(l, c);
+		return model::logOddsLeg(m_bb, l);
+	});
+	m_bb.setLeg(l, best);
 	m_result->proposed[static_cast<size_t>(Move::Refit)]++;
 	m_result->accepted[static_cast<size_t>(Move::Refit)] += value > start;
 }

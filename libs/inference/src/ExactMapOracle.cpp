@@ -168,19 +168,9 @@ class Search
 		for (Leg l : seeds)
 		{
 			l.texture = seeds[0].texture;
-			double best = legGain(mask, l, nullptr, -1);
-			for (double step = m_p.leg_width / 4; step > 1e-4; step /= 2)
-				for (bool improved = true; improved;)
-				{
-					improved = false;
-					for (int k = 0; k < 6; k++)
-					{
-						Leg c = l;
-						(k < 2 ? c.x : k < 4 ? c.y : c.theta) += (k % 2 ? -1 : 1) * (k < 4 ? step : 10 * step);
-						const double v = legGain(mask, c, nullptr, -1);
-						if (v > best + 1e-12) best = v, l = c, improved = true;
-					}
-				}
+			const double best = compassSearch(
+				l, m_p.leg_width, legGain(mask, l, nullptr, -1), 1e-12,
+				[&](const Leg& c) { return legGain(mask, c, nullptr, -1); });
 			if (best > g.freeGain) g.free = l, g.freeGain = best;
 		}
 		return g;

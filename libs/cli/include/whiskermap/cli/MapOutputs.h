@@ -45,7 +45,7 @@ class MapOutputs
    private:
 	void drawSnapshot(size_t index);
 	void writeScene(const std::string& path) const;
-	void writeSummary(const std::string& path, double wallSeconds, const std::string& metricsJson) const;
+	void writeSummary(const std::string& path, double wallSeconds, size_t mapped, const std::string& metricsJson) const;
 
 	OutputDir& m_out;
 	const maps::CHierarchicalObjectMap& m_map;

@@ -30,4 +30,27 @@ model::Leg fitLeg(
 model::Table fitTable(
 	const model::ModelParams& p, const model::Table& start, const model::Leg* const* legs, const int* corners,
 	size_t n);
+
+/** Greedy compass search over a leg's (x, y, yaw): moves of +-step in x and y and +-10 step
+ *  (radians) in yaw, from a quarter of `legWidth` down to 0.1 mm, keeping any move that
+ *  raises `score(leg)` by more than `tolerance`. `value` is score(leg) on entry; `leg`
+ *  leaves as the best pose found, and its score is returned. Used where the closed forms
+ *  above are not the whole score (the oracle's free legs, the sampler's polish). */
+template <class Score>
+double compassSearch(model::Leg& leg, double legWidth, double value, double tolerance, Score&& score)
+{
+	for (double step = legWidth / 4; step > 1e-4; step /= 2)
+		for (bool improved = true; improved;)
+		{
+			improved = false;
+			for (int k = 0; k < 6; k++)
+			{
+				model::Leg c = leg;
+				(k < 2 ? c.x : k < 4 ? c.y : c.theta) += (k % 2 ? -1 : 1) * (k < 4 ? step : 10 * step);
+				const double v = score(c);
+				if (v > value + tolerance) value = v, leg = c, improved = true;
+			}
+		}
+	return value;
+}
 }  // namespace whiskermap::inference
