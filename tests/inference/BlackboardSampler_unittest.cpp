@@ -187,6 +187,30 @@ TEST(PoseFit, LegRefitFromTwoCentimetresOff)
 	EXPECT_LT(std::hypot(one.x - x, one.y - y), 0.002);
 }
 
+// The same contacts folded into a leg's evidence (LegEvidence) fit the leg as they do
+// one by one: the lasting map keeps its legs where all their contacts put them.
+TEST(PoseFit, FoldedContactsFitLikeExplicitOnes)
+{
+	const auto shapelets = touchTable(truth, P, {{0, 0, 0.01}, {0, 1, -0.005}, {0, 0, -0.008}});
+	double x = 0, y = 0;
+	model::tableCorner(truth, 0, P, x, y);
+	const obs::Shapelet* contacts[3] = {&shapelets[0], &shapelets[1], &shapelets[2]};
+	const model::Leg explicitFit = inference::fitLeg(P, contacts, 3, nullptr, x + 0.02, y - 0.01, 1e-3);
+	model::Leg start = explicitFit;
+	start.x += 0.004, start.theta += 0.03;  // folded while the leg was a little off
+	model::LegEvidence folded;
+	for (const auto& s : shapelets) folded.add(s, start, P);
+	const model::Leg foldedFit = inference::fitLeg(P, nullptr, 0, nullptr, x + 0.02, y - 0.01, 1e-3, &folded);
+	EXPECT_LT(std::hypot(foldedFit.x - explicitFit.x, foldedFit.y - explicitFit.y), 1e-4);
+	EXPECT_LT(std::abs(core::angleDiff(foldedFit.theta, explicitFit.theta, M_PI_2)), 1e-6);
+	EXPECT_NEAR(foldedFit.texture, explicitFit.texture, 1e-9);
+	// Half folded, half explicit: the same again.
+	model::LegEvidence half;
+	half.add(shapelets[0], start, P);
+	const model::Leg mixed = inference::fitLeg(P, contacts + 1, 2, nullptr, x + 0.02, y - 0.01, 1e-3, &half);
+	EXPECT_LT(std::hypot(mixed.x - explicitFit.x, mixed.y - explicitFit.y), 1e-4);
+}
+
 TEST(PoseFit, TableFromTwoLegs)
 {
 	for (int pair = 0; pair < 3; pair++)

@@ -20,7 +20,9 @@ struct RandomBoards
 	double u(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
 	int pick(int n) { return static_cast<int>(rng() % static_cast<uint64_t>(n)); }
 
-	Blackboard make()
+	/** With `lasting`: some legs carry folded contacts and fixed context objects stand around
+	 *  (the lasting map's local problems). */
+	Blackboard make(bool lasting = false)
 	{
 		std::vector<whiskermap::obs::Shapelet> shapelets;
 		Blackboard bb(p);
@@ -55,23 +57,97 @@ struct RandomBoards
 		withShapelets.reset(shapelets);
 		// Re-create the hypotheses on the board holding the shapelets (same ids).
 		for (Id t : tables) withShapelets.addTable(bb.table(t));
-		for (Id l : legs) withShapelets.addLeg(bb.leg(l));
+		for (Id l : legs)
+		{
+			LegEvidence e;
+			const Leg& leg = bb.leg(l);
+			for (int k = 0; lasting && k < pick(4); k++)
+				e.add({leg.x + u(-0.04, 0.04), leg.y + u(-0.04, 0.04), u(-M_PI, M_PI), u(0, 1), k}, leg, p);
+			withShapelets.addLeg(leg, e);
+		}
 		for (size_t s = 0; s < shapelets.size(); s++)
 			if (pick(5) > 0) withShapelets.setShapeletParent(s, legs[pick(nl)]);
+		for (int k = 0; lasting && k < 3; k++)
+		{
+			withShapelets.addContextTable({u(-0.8, 0.8), u(-0.8, 0.8), u(-M_PI, M_PI), p.leg_width, p.texture});
+			withShapelets.addContextLeg({u(-0.8, 0.8), u(-0.8, 0.8), u(-M_PI, M_PI), p.leg_width, p.leg_width, 0.5, NONE, -1});
+		}
 		return withShapelets;
 	}
 };
 }  // namespace
 
-// For every present table and leg H of 300 random blackboards: the local eq. 20 log-odds
-// equals logJoint(B) - logJoint(B minus H, H's children unlinked), the brute-force eq. 14.
+namespace
+{
+/** Overlapping same-type pairs by brute force, context included (eq. 16): the reference
+ *  for logJoint's hashed count. */
+int bruteForceOverlaps(const Blackboard& bb)
+{
+	const ModelParams& p = bb.params();
+	int n = 0;
+	for (Id t = 0; t < bb.tableIdBound(); t++)
+	{
+		for (Id o = t + 1; o < bb.tableIdBound(); o++)
+			n += bb.hasTable(o) && tableRect(bb.table(t), p).overlaps(tableRect(bb.table(o), p));
+		for (const Table& c : bb.contextTables()) n += tableRect(bb.table(t), p).overlaps(tableRect(c, p));
+	}
+	for (Id l = 0; l < bb.legIdBound(); l++)
+	{
+		for (Id o = l + 1; o < bb.legIdBound(); o++)
+			n += bb.hasLeg(o) && legRect(bb.leg(l)).overlaps(legRect(bb.leg(o)));
+		for (const Leg& c : bb.contextLegs()) n += legRect(bb.leg(l)).overlaps(legRect(c));
+	}
+	return n;
+}
+}  // namespace
+
+/** The same board under other parameters (ids kept: the generator never removes). */
+Blackboard withParams(const Blackboard& bb, const ModelParams& p)
+{
+	Blackboard out(p);
+	out.reset(bb.shapelets());
+	for (Id t = 0; t < bb.tableIdBound(); t++) out.addTable(bb.table(t));
+	for (Id l = 0; l < bb.legIdBound(); l++) out.addLeg(bb.leg(l), bb.evidence(l));
+	for (size_t s = 0; s < bb.shapelets().size(); s++) out.setShapeletParent(s, bb.shapeletParent(s));
+	for (const Table& t : bb.contextTables()) out.addContextTable(t);
+	for (const Leg& l : bb.contextLegs()) out.addContextLeg(l);
+	return out;
+}
+
+// logJoint's overlap factor, counted through the spatial hashes, equals the brute-force count
+// over all pairs: logJoint under two values of epsilon differs by the tables' phi_a, phi_b
+// (eqs. 15, 17) and n log(eps1 / eps2), n the overlapping pairs (eq. 16).
+TEST(Posterior, HashedOverlapsEqualBruteForce)
+{
+	RandomBoards gen;
+	int overlapping = 0;
+	for (int trial = 0; trial < 300; trial++)
+	{
+		const Blackboard bb = gen.make(trial % 2 == 1);
+		ModelParams p2 = gen.p;
+		p2.epsilon = 0.3;
+		const Blackboard other = withParams(bb, p2);
+		double constraints = 0;
+		for (Id t = 0; t < bb.tableIdBound(); t++)
+			constraints += logTableConstraints(bb.cornerCounts(t), gen.p) - logTableConstraints(bb.cornerCounts(t), p2);
+		const double hashed = (logJoint(bb) - logJoint(other) - constraints) / std::log(gen.p.epsilon / p2.epsilon);
+		const int n = bruteForceOverlaps(bb);
+		EXPECT_NEAR(hashed, n, 1e-6) << "trial " << trial;
+		overlapping += n > 0;
+	}
+	EXPECT_GT(overlapping, 100);
+}
+
+// For every present table and leg H of 300 random blackboards (half of them lasting-map
+// problems: folded evidence on legs, context objects around): the local eq. 20 log-odds
+// equals logJoint(B) - logJoint(B minus H, H's children unlinked).
 TEST(Posterior, LocalLogOddsEqualsJointDifference)
 {
 	RandomBoards gen;
-	int checked = 0, withTableOverlap = 0, withLegOverlap = 0, withSameCorner = 0;
+	int checked = 0, withTableOverlap = 0, withLegOverlap = 0, withSameCorner = 0, withEvidence = 0;
 	for (int trial = 0; trial < 300; trial++)
 	{
-		const Blackboard bb = gen.make();
+		const Blackboard bb = gen.make(trial % 2 == 1);
 		const double full = logJoint(bb);
 		for (Id t = 0; t < bb.tableIdBound(); t++)
 		{
@@ -88,6 +164,7 @@ TEST(Posterior, LocalLogOddsEqualsJointDifference)
 			Blackboard without = bb;
 			without.removeLeg(l);
 			EXPECT_NEAR(logOddsLeg(bb, l), full - logJoint(without), 1e-8);
+			withEvidence += !bb.evidence(l).empty();
 			for (Id o = 0; o < bb.legIdBound(); o++)
 				withLegOverlap += o != l && legRect(bb.leg(l)).overlaps(legRect(bb.leg(o)));
 			checked++;
@@ -98,6 +175,7 @@ TEST(Posterior, LocalLogOddsEqualsJointDifference)
 	EXPECT_GT(withTableOverlap, 50);
 	EXPECT_GT(withLegOverlap, 20);
 	EXPECT_GT(withSameCorner, 20);
+	EXPECT_GT(withEvidence, 100);
 }
 
 // Link gains (used by the sampler's reparent moves) equal joint differences too, for the

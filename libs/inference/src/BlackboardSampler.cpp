@@ -31,10 +31,28 @@ BlackboardSampler::BlackboardSampler(const model::ModelParams& model, const Samp
 StepResult BlackboardSampler::step(
 	const std::vector<obs::Shapelet>& shapelets, uint64_t seed, int snapshotTemperature)
 {
+	m_bb.reset(shapelets);
+	StepResult result;
+	run(result, seed, snapshotTemperature);
+	return result;
+}
+
+StepResult BlackboardSampler::anneal(const model::Blackboard& start, uint64_t seed, int snapshotTemperature)
+{
+	m_bb = start;
 	StepResult result;
 	m_result = &result;
 	m_rng.seed(seed);
-	m_bb.reset(shapelets);
+	associate();
+	checkpoint(result);  // the map as it was, with the new contacts associated: the first candidate
+	run(result, seed ^ 0x5DEECE66Dull, snapshotTemperature);
+	return result;
+}
+
+void BlackboardSampler::run(StepResult& result, uint64_t seed, int snapshotTemperature)
+{
+	m_result = &result;
+	m_rng.seed(seed);
 	const auto& betas = m_params.schedule.betas();
 	for (size_t k = 0; k < betas.size(); k++)
 	{
@@ -57,7 +75,37 @@ StepResult BlackboardSampler::step(
 	}
 	result.map = m_best.compact();
 	m_result = nullptr;
-	return result;
+}
+
+// Data association first: each shapelet without a leg takes the best of linking to a nearby
+// leg (which refits) or a new leg of its own, when that beats leaving it unexplained.
+void BlackboardSampler::associate()
+{
+	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
+	{
+		if (m_bb.shapeletParent(s) != NONE) continue;
+		legsNearShapelet(s, m_candidates);
+		Id bestLeg = NONE;
+		double bestGain = 0;
+		for (const Id l : m_candidates)
+		{
+			const Leg old = m_bb.leg(l);
+			double gain = model::logShapeletLinkGain(m_bb, s, l);
+			m_bb.setShapeletParent(s, l);
+			refitInPlace(l, gain);
+			m_bb.setShapeletParent(s, NONE);
+			m_bb.setLeg(l, old);
+			if (gain > bestGain) bestGain = gain, bestLeg = l;
+		}
+		const Id id = m_bb.addLeg(newLegFor(s));
+		m_bb.setShapeletParent(s, id);
+		if (model::logOddsLeg(m_bb, id) > bestGain) continue;  // the new leg stays
+		m_bb.removeLeg(id);
+		if (bestLeg == NONE) continue;
+		m_bb.setShapeletParent(s, bestLeg);
+		double ignored = 0;
+		refitInPlace(bestLeg, ignored);
+	}
 }
 
 void BlackboardSampler::checkpoint(StepResult& result)
@@ -77,9 +125,9 @@ void BlackboardSampler::sweep(double beta)
 	m_tableOrder.clear();
 	m_legOrder.clear();
 	for (Id t = 0; t < m_bb.tableIdBound(); t++)
-		if (m_bb.hasTable(t)) m_tableOrder.push_back(t);
+		if (m_bb.hasTable(t) && !m_bb.tableDormant(t)) m_tableOrder.push_back(t);
 	for (Id l = 0; l < m_bb.legIdBound(); l++)
-		if (m_bb.hasLeg(l)) m_legOrder.push_back(l);
+		if (m_bb.hasLeg(l) && !m_bb.legDormant(l)) m_legOrder.push_back(l);
 	for (const Id t : m_tableOrder)
 		if (m_bb.hasTable(t)) visitTable(t, beta);
 	for (const Id l : m_legOrder)
@@ -166,7 +214,8 @@ void BlackboardSampler::visitLeg(Id l, double beta)
 {
 	const double u = uniform();
 	const bool all = greedy(beta);
-	if ((all || u < m_params.r1) && m_bb.hasLeg(l) &&
+	// A leg holding folded contacts never dies: they would be lost (doc/map-plugin.md).
+	if ((all || u < m_params.r1) && m_bb.hasLeg(l) && m_bb.evidence(l).empty() &&
 		accept(Move::Death, -model::logOddsLeg(m_bb, l), beta))
 		m_bb.removeLeg(l);
 	if ((all || (u >= m_params.r1 && u < m_params.r2)) && m_bb.hasLeg(l)) proposeLegReparent(l, beta);
@@ -208,10 +257,10 @@ void BlackboardSampler::proposeLegReparent(Id l, double beta)
 // L explains two or more) one of L's contacts leaves it for a new leg.
 void BlackboardSampler::proposeLegChild(Id l, double beta)
 {
-	m_candidates.clear();
-	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
-		if (m_bb.shapeletParent(s) == l) m_candidates.push_back(static_cast<Id>(s));
-	if (m_candidates.size() >= 2 && (greedy(beta) || uniform() < 0.5))
+	m_candidates = m_bb.shapeletsOf(l);
+	// A split needs a contact to leave and something to stay: another contact or folded evidence.
+	if (!m_candidates.empty() && m_candidates.size() + !m_bb.evidence(l).empty() >= 2 &&
+		(greedy(beta) || uniform() < 0.5))
 	{
 		proposeSplit(static_cast<size_t>(m_candidates[pick(m_candidates.size())]), beta);
 		if (!greedy(beta)) return;
@@ -252,7 +301,7 @@ void BlackboardSampler::proposeLink(size_t s, Id l, Move m, double beta)
 	double gain = model::logShapeletLinkGain(m_bb, s, l) - model::logShapeletLinkGain(m_bb, s, from);
 	m_bb.setShapeletParent(s, l);
 	refitInPlace(l, gain);
-	const bool drop = from != NONE && m_bb.leg(from).parent == NONE && !explains(from);
+	const bool drop = from != NONE && m_bb.leg(from).parent == NONE && !m_bb.explains(from);
 	if (drop) gain -= model::logOddsLeg(m_bb, from);
 	if (accept(m, gain, beta))
 	{
@@ -271,7 +320,7 @@ void BlackboardSampler::mergeCandidates(Id l)
 	// the leg centres are within that plus one half-diagonal each.
 	const double w = m_model.leg_width, reach = 2 * w * std::sqrt(2.0) + 2 * m_model.parent_gate;
 	m_bb.forEachLegNear(leg.x, leg.y, reach, [&](Id o) {
-		if (o != l && explains(o)) m_mergeable.push_back(o);
+		if (o != l && m_bb.explains(o)) m_mergeable.push_back(o);
 	});
 }
 
@@ -280,23 +329,32 @@ void BlackboardSampler::mergeCandidates(Id l)
 // contacts. Exact local change of logJoint; undone exactly on rejection.
 bool BlackboardSampler::proposeMerge(Id l, Id other, double beta)
 {
-	m_moved.clear();
-	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
-		if (m_bb.shapeletParent(s) == other) m_moved.push_back(s);
-	if (m_moved.empty()) return false;
+	m_moved.assign(m_bb.shapeletsOf(other).begin(), m_bb.shapeletsOf(other).end());
+	if (!m_bb.explains(other)) return false;
 	const Leg oldL = m_bb.leg(l), oldOther = m_bb.leg(other);
+	const model::LegEvidence oldEvidence = m_bb.evidence(l), otherEvidence = m_bb.evidence(other);
 	double gain = -model::logOddsLeg(m_bb, other);
 	m_bb.removeLeg(other);
-	for (const size_t s : m_moved)
+	for (const Id s : m_moved)
 	{
-		gain += model::logShapeletLinkGain(m_bb, s, l);
-		m_bb.setShapeletParent(s, l);
+		gain += model::logShapeletLinkGain(m_bb, static_cast<size_t>(s), l);
+		m_bb.setShapeletParent(static_cast<size_t>(s), l);
+	}
+	if (!otherEvidence.empty())
+	{
+		// The folded contacts move too: log-odds of l before and after (eq. 20) differ by them.
+		gain -= model::logOddsLeg(m_bb, l);
+		model::LegEvidence merged = oldEvidence;
+		merged.merge(otherEvidence);
+		m_bb.setEvidence(l, merged);
+		gain += model::logOddsLeg(m_bb, l);
 	}
 	const bool fitted = refitInPlace(l, gain);
 	if (fitted && accept(Move::Child, gain, beta)) return true;
 	m_bb.setLeg(l, oldL);
-	const Id back = m_bb.addLeg(oldOther);
-	for (const size_t s : m_moved) m_bb.setShapeletParent(s, back);
+	m_bb.setEvidence(l, oldEvidence);
+	const Id back = m_bb.addLeg(oldOther, otherEvidence);
+	for (const Id s : m_moved) m_bb.setShapeletParent(static_cast<size_t>(s), back);
 	return false;
 }
 
@@ -403,21 +461,10 @@ void BlackboardSampler::proposeTableForLeg(Id l, double beta)
 	for (size_t i = 0; i < m_candidates.size(); i++) m_bb.setLegParent(m_candidates[i], m_oldParents[i]);
 }
 
-bool BlackboardSampler::explains(Id l) const
-{
-	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
-		if (m_bb.shapeletParent(s) == l) return true;
-	return false;
-}
-
 bool BlackboardSampler::hasSupportedLeg(Id table, const std::vector<Id>& except) const
 {
-	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
-	{
-		const Id l = m_bb.shapeletParent(s);
-		if (l != NONE && m_bb.leg(l).parent == table && std::find(except.begin(), except.end(), l) == except.end())
-			return true;
-	}
+	for (const Id l : m_bb.legsOf(table))
+		if (m_bb.explains(l) && std::find(except.begin(), except.end(), l) == except.end()) return true;
 	return false;
 }
 
@@ -425,8 +472,8 @@ double BlackboardSampler::removeTableAndOrphans(Id table)
 {
 	double logOdds = -model::logOddsTable(m_bb, table);
 	m_orphans.clear();
-	for (Id l = 0; l < m_bb.legIdBound(); l++)
-		if (m_bb.hasLeg(l) && m_bb.leg(l).parent == table && !explains(l)) m_orphans.push_back(l);
+	for (const Id l : m_bb.legsOf(table))
+		if (!m_bb.explains(l)) m_orphans.push_back(l);
 	m_bb.removeTable(table);
 	for (const Id l : m_orphans)
 	{
@@ -494,16 +541,16 @@ bool BlackboardSampler::fittedLeg(Id l, const Table* t, Leg& out)
 {
 	const Leg& leg = m_bb.leg(l);
 	m_contacts.clear();
-	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
-		if (m_bb.shapeletParent(s) == l) m_contacts.push_back(&m_bb.shapelets()[s]);
-	if (m_contacts.empty() && !t) return false;
+	for (const Id s : m_bb.shapeletsOf(l)) m_contacts.push_back(&m_bb.shapelets()[static_cast<size_t>(s)]);
+	const model::LegEvidence& evidence = m_bb.evidence(l);
+	if (m_contacts.empty() && evidence.empty() && !t) return false;
 	double qx = leg.x, qy = leg.y, pull = FREE_LEG_PULL;
 	if (t)
 	{
 		model::tableCorner(*t, model::logLegGivenTable(leg, *t, m_model).corner, m_model, qx, qy);
 		pull = 1;
 	}
-	out = fitLeg(m_model, m_contacts.data(), m_contacts.size(), t, qx, qy, pull);
+	out = fitLeg(m_model, m_contacts.data(), m_contacts.size(), t, qx, qy, pull, &evidence);
 	out.parent = leg.parent;
 	const model::OrientedRect r = model::legRect(out);
 	for (const obs::Shapelet* s : m_contacts)
@@ -538,8 +585,7 @@ void BlackboardSampler::proposeLegRefit(Id l, double beta)
 void BlackboardSampler::proposeTableRefit(Id t, double beta)
 {
 	m_savedLegs.clear();
-	for (Id l = 0; l < m_bb.legIdBound(); l++)
-		if (m_bb.hasLeg(l) && m_bb.leg(l).parent == t) m_savedLegs.emplace_back(l, m_bb.leg(l));
+	for (const Id l : m_bb.legsOf(t)) m_savedLegs.emplace_back(l, m_bb.leg(l));
 	const Table old = m_bb.table(t);
 	const double before = model::logJoint(m_bb);
 	bool valid = true;
@@ -548,13 +594,13 @@ void BlackboardSampler::proposeTableRefit(Id t, double beta)
 		m_fitLegs.clear();
 		m_fitCorners.clear();
 		for (const auto& [l, saved] : m_savedLegs)
-			if (explains(l)) m_fitLegs.push_back(&m_bb.leg(l)), m_fitCorners.push_back(m_bb.leg(l).corner);
+			if (m_bb.explains(l)) m_fitLegs.push_back(&m_bb.leg(l)), m_fitCorners.push_back(m_bb.leg(l).corner);
 		if (m_fitLegs.empty()) return;  // nothing to fit (and nothing changed yet)
 		m_bb.setTable(t, fitTable(m_model, old, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size()));
 		for (const auto& [l, saved] : m_savedLegs)
 		{
 			Leg fit;
-			if (!explains(l)) continue;
+			if (!m_bb.explains(l)) continue;
 			valid = valid && fittedLeg(l, &m_bb.table(t), fit);
 			if (valid) m_bb.setLeg(l, fit);
 		}
@@ -562,7 +608,7 @@ void BlackboardSampler::proposeTableRefit(Id t, double beta)
 	const Table& now = m_bb.table(t);
 	for (const auto& [l, saved] : m_savedLegs)
 	{
-		if (explains(l)) continue;
+		if (m_bb.explains(l)) continue;
 		Leg moved = saved;
 		model::tableCorner(now, saved.corner, m_model, moved.x, moved.y);
 		moved.theta = now.theta;
@@ -597,8 +643,8 @@ void BlackboardSampler::prune()
 {
 	m_legSupported.assign(static_cast<size_t>(m_bb.legIdBound()), 0);
 	m_tableSupported.assign(static_cast<size_t>(m_bb.tableIdBound()), 0);
-	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
-		if (m_bb.shapeletParent(s) != NONE) m_legSupported[m_bb.shapeletParent(s)] = 1;
+	for (Id l = 0; l < m_bb.legIdBound(); l++)
+		if (m_bb.hasLeg(l) && m_bb.explains(l)) m_legSupported[l] = 1;
 	for (Id l = 0; l < m_bb.legIdBound(); l++)
 		if (m_bb.hasLeg(l) && m_legSupported[l] && m_bb.leg(l).parent != NONE)
 			m_tableSupported[m_bb.leg(l).parent] = 1;

@@ -16,20 +16,25 @@ double sq(double v) { return v * v; }
 
 model::Leg fitLeg(
 	const model::ModelParams& p, const obs::Shapelet* const* s, size_t n, const model::Table* t, double qx,
-	double qy, double pull)
+	double qy, double pull, const model::LegEvidence* evidence)
 {
 	const double w = p.leg_width;
+	double evWeight = 0;
+	const bool folded = evidence && !evidence->empty();
+	const double evYaw = folded ? evidence->meanYaw(p, evWeight) : 0;
 	// Yaw: the mean (mod 90 deg) around each reference angle; keep the one of least cost.
-	double theta = t ? t->theta : 0, bestCost = std::numeric_limits<double>::infinity();
-	for (int ref = -1; ref < static_cast<int>(n); ref++)
+	double theta = t ? t->theta : folded ? evYaw : 0, bestCost = std::numeric_limits<double>::infinity();
+	for (int ref = -2; ref < static_cast<int>(n); ref++)
 	{
-		if (ref < 0 && !t) continue;
-		const double a0 = ref < 0 ? t->theta : s[ref]->normal;
+		if ((ref == -2 && !folded) || (ref == -1 && !t)) continue;
+		const double a0 = ref == -2 ? evYaw : ref == -1 ? t->theta : s[ref]->normal;
 		double sum = t ? core::angleDiff(t->theta, a0, M_PI_2) : 0;
-		int count = t ? 1 : 0;
+		double count = t ? 1 : 0;
+		if (folded) sum += evWeight * core::angleDiff(evYaw, a0, M_PI_2), count += evWeight;
 		for (size_t i = 0; i < n; i++) sum += core::angleDiff(s[i]->normal, a0, M_PI_2), count++;
 		const double th = a0 + sum / count;
 		double cost = t ? sq(core::angleDiff(t->theta, th, M_PI_2)) : 0;
+		if (folded) cost += evWeight * sq(core::angleDiff(evYaw, th, M_PI_2));
 		for (size_t i = 0; i < n; i++) cost += sq(core::angleDiff(s[i]->normal, th, M_PI_2));
 		if (cost < bestCost) bestCost = cost, theta = th;
 	}
@@ -45,6 +50,7 @@ model::Leg fitLeg(
 		const double d = ux[i] * s[i]->x + uy[i] * s[i]->y - w / 2;
 		a11 += ux[i] * ux[i], a12 += ux[i] * uy[i], a22 += uy[i] * uy[i], b1 += ux[i] * d, b2 += uy[i] * d;
 	}
+	if (folded) evidence->addCentreEquations(theta, w, p, a11, a12, a22, b1, b2);
 	const double det = a11 * a22 - a12 * a12;
 	double px = (a22 * b1 - a12 * b2) / det, py = (a11 * b2 - a12 * b1) / det;
 	// A contact must lie along its face less far from the face centre than its height h above
@@ -70,14 +76,20 @@ model::Leg fitLeg(
 		const double push = std::abs(a) + MARGIN - h;
 		if (push > 0) px -= ux[i] * push, py -= uy[i] * push;
 	}
-	double texture = t ? t->texture : 0;
+	double texture = t ? t->texture : 0, textureWeight = n + (t ? 1 : 0);
 	for (size_t i = 0; i < n; i++) texture += s[i]->texture;
+	if (folded)
+	{
+		double tw = 0;
+		const double mean = evidence->meanTexture(p, tw);
+		texture += tw * mean, textureWeight += tw;
+	}
 	model::Leg l;
 	l.x = px;
 	l.y = py;
 	l.theta = theta;
 	l.wx = l.wy = w;
-	l.texture = texture / static_cast<double>(n + (t ? 1 : 0));
+	l.texture = texture / textureWeight;
 	return l;
 }
 

@@ -9,7 +9,9 @@ namespace whiskermap::model
 Blackboard::Blackboard(const ModelParams& p)
 	: m_p(p),
 	  m_tableHash(std::hypot(p.table_length, p.table_width)),
-	  m_legHash(4 * p.leg_width)
+	  m_legHash(4 * p.leg_width),
+	  m_contextTableHash(std::hypot(p.table_length, p.table_width)),
+	  m_contextLegHash(4 * p.leg_width)
 {
 }
 
@@ -19,24 +21,52 @@ void Blackboard::reset(const std::vector<obs::Shapelet>& shapelets)
 	m_shapeletParent.assign(shapelets.size(), NONE);
 	m_tables.clear();
 	m_legs.clear();
+	// Per-id side tables (children, evidence, dormancy) keep their storage: add*() resets an
+	// id's entries when its slot is used again.
+	m_contextTables.clear();
+	m_contextLegs.clear();
 	m_tableHash.clear();
 	m_legHash.clear();
+	m_contextTableHash.clear();
+	m_contextLegHash.clear();
 	m_maxLegRadius = 0;
+}
+
+void Blackboard::grow()
+{
+	const auto nt = static_cast<size_t>(m_tables.capacity()), nl = static_cast<size_t>(m_legs.capacity());
+	if (m_tableLegs.size() < nt) m_tableLegs.resize(nt), m_tableDormant.resize(nt, 0);
+	if (m_legShapelets.size() < nl) m_legShapelets.resize(nl), m_legDormant.resize(nl, 0), m_evidence.resize(nl);
+}
+
+void Blackboard::insertSorted(std::vector<Id>& v, Id id) { v.insert(std::upper_bound(v.begin(), v.end(), id), id); }
+
+void Blackboard::eraseValue(std::vector<Id>& v, Id id)
+{
+	const auto it = std::lower_bound(v.begin(), v.end(), id);
+	if (it != v.end() && *it == id) v.erase(it);
 }
 
 Id Blackboard::addTable(const Table& t)
 {
 	const Id id = m_tables.add(t);
+	grow();
+	m_tableLegs[id].clear();
+	m_tableDormant[id] = 0;
 	m_tableHash.insert(id, t.x, t.y);
 	return id;
 }
 
-Id Blackboard::addLeg(const Leg& l)
+Id Blackboard::addLeg(const Leg& l, const LegEvidence& evidence)
 {
 	Leg unlinked = l;
 	unlinked.parent = NONE;
 	unlinked.corner = -1;
 	const Id id = m_legs.add(unlinked);
+	grow();
+	m_legShapelets[id].clear();
+	m_legDormant[id] = 0;
+	m_evidence[id] = evidence;
 	m_legHash.insert(id, l.x, l.y);
 	m_maxLegRadius = std::max(m_maxLegRadius, std::hypot(l.wx, l.wy) / 2);
 	setLegParent(id, l.parent);
@@ -45,16 +75,18 @@ Id Blackboard::addLeg(const Leg& l)
 
 void Blackboard::removeTable(Id id)
 {
-	for (Id l = 0; l < m_legs.capacity(); l++)
-		if (m_legs.alive(l) && m_legs[l].parent == id) setLegParent(l, NONE);
+	const std::vector<Id> legs = m_tableLegs[id];
+	for (const Id l : legs) setLegParent(l, NONE);
 	m_tableHash.erase(id, m_tables[id].x, m_tables[id].y);
 	m_tables.remove(id);
 }
 
 void Blackboard::removeLeg(Id id)
 {
-	for (auto& parent : m_shapeletParent)
-		if (parent == id) parent = NONE;
+	for (const Id s : m_legShapelets[id]) m_shapeletParent[static_cast<size_t>(s)] = NONE;
+	m_legShapelets[id].clear();
+	setLegParent(id, NONE);
+	m_evidence[id] = {};
 	m_legHash.erase(id, m_legs[id].x, m_legs[id].y);
 	m_legs.remove(id);
 }
@@ -62,36 +94,59 @@ void Blackboard::removeLeg(Id id)
 void Blackboard::setLegParent(Id leg, Id table)
 {
 	Leg& l = m_legs[leg];
+	if (l.parent != NONE) eraseValue(m_tableLegs[l.parent], leg);
 	l.parent = table;
 	l.corner = table == NONE ? -1 : logLegGivenTable(l, m_tables[table], m_p).corner;
+	if (table != NONE) insertSorted(m_tableLegs[table], leg);
 }
 
-void Blackboard::setShapeletParent(size_t shapelet, Id leg) { m_shapeletParent[shapelet] = leg; }
+void Blackboard::setShapeletParent(size_t shapelet, Id leg)
+{
+	Id& parent = m_shapeletParent[shapelet];
+	if (parent != NONE) eraseValue(m_legShapelets[parent], static_cast<Id>(shapelet));
+	parent = leg;
+	if (leg != NONE) insertSorted(m_legShapelets[leg], static_cast<Id>(shapelet));
+}
 
 void Blackboard::setTable(Id id, const Table& t)
 {
 	m_tableHash.erase(id, m_tables[id].x, m_tables[id].y);
 	m_tables[id] = t;
 	m_tableHash.insert(id, t.x, t.y);
-	for (Id l = 0; l < m_legs.capacity(); l++)
-		if (m_legs.alive(l) && m_legs[l].parent == id) setLegParent(l, id);
+	for (const Id l : m_tableLegs[id])
+		m_legs[l].corner = logLegGivenTable(m_legs[l], t, m_p).corner;
 }
 
 void Blackboard::setLeg(Id id, const Leg& l)
 {
-	const Id parent = m_legs[id].parent;
-	m_legHash.erase(id, m_legs[id].x, m_legs[id].y);
-	m_legs[id] = l;
+	Leg& leg = m_legs[id];
+	m_legHash.erase(id, leg.x, leg.y);
+	const Id parent = leg.parent;
+	leg = l;
+	leg.parent = parent;
+	leg.corner = parent == NONE ? -1 : logLegGivenTable(leg, m_tables[parent], m_p).corner;
 	m_legHash.insert(id, l.x, l.y);
 	m_maxLegRadius = std::max(m_maxLegRadius, std::hypot(l.wx, l.wy) / 2);
-	setLegParent(id, parent);
+}
+
+void Blackboard::addContextTable(const Table& t)
+{
+	m_contextTables.push_back(t);
+	m_contextTableHash.insert(static_cast<Id>(m_contextTables.size() - 1), t.x, t.y);
+}
+
+void Blackboard::addContextLeg(const Leg& l)
+{
+	m_contextLegs.push_back(l);
+	m_contextLegHash.insert(static_cast<Id>(m_contextLegs.size() - 1), l.x, l.y);
+	m_maxLegRadius = std::max(m_maxLegRadius, std::hypot(l.wx, l.wy) / 2);
 }
 
 CornerCounts Blackboard::cornerCounts(Id table, Id excludeLeg) const
 {
 	CornerCounts c{0, 0, 0, 0};
-	for (Id l = 0; l < m_legs.capacity(); l++)
-		if (l != excludeLeg && m_legs.alive(l) && m_legs[l].parent == table) c[m_legs[l].corner]++;
+	for (const Id l : m_tableLegs[table])
+		if (l != excludeLeg) c[m_legs[l].corner]++;
 	return c;
 }
 

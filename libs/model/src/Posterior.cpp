@@ -26,25 +26,44 @@ double logShapeletDensity(const Blackboard& bb, size_t s, Id leg)
 	return logNoisyOr(cause, logShapeletNull(p));
 }
 
-int overlappingTables(const Blackboard& bb, Id t)
+// Same-type overlaps of table t (leg l) with the board's other hypotheses and, separately,
+// with the context objects (eq. 16).
+struct Overlaps
+{
+	int board = 0, context = 0;
+};
+
+Overlaps overlappingTables(const Blackboard& bb, Id t)
 {
 	const ModelParams& p = bb.params();
 	const OrientedRect r = tableRect(bb.table(t), p);
-	int n = 0;
-	bb.forEachTableNear(r.cx, r.cy, std::hypot(p.table_length, p.table_width), [&](Id o) {
-		n += o != t && r.overlaps(tableRect(bb.table(o), p));
+	const double reach = std::hypot(p.table_length, p.table_width);
+	Overlaps n;
+	bb.forEachTableNear(r.cx, r.cy, reach, [&](Id o) { n.board += o != t && r.overlaps(tableRect(bb.table(o), p)); });
+	bb.forEachContextTableNear(r.cx, r.cy, reach, [&](Id o) {
+		n.context += r.overlaps(tableRect(bb.contextTables()[static_cast<size_t>(o)], p));
 	});
 	return n;
 }
 
-int overlappingLegs(const Blackboard& bb, Id l)
+Overlaps overlappingLegs(const Blackboard& bb, Id l)
 {
 	const OrientedRect r = legRect(bb.leg(l));
-	int n = 0;
-	bb.forEachLegNear(r.cx, r.cy, std::hypot(r.hx, r.hy) + bb.maxLegRadius(), [&](Id o) {
-		n += o != l && r.overlaps(legRect(bb.leg(o)));
+	const double reach = std::hypot(r.hx, r.hy) + bb.maxLegRadius();
+	Overlaps n;
+	bb.forEachLegNear(r.cx, r.cy, reach, [&](Id o) { n.board += o != l && r.overlaps(legRect(bb.leg(o))); });
+	bb.forEachContextLegNear(r.cx, r.cy, reach, [&](Id o) {
+		n.context += r.overlaps(legRect(bb.contextLegs()[static_cast<size_t>(o)]));
 	});
 	return n;
+}
+
+// The folded contacts of a leg against their null cause: log p(S | L) - log c_S summed
+// (eqs. 7, 9, 12).
+double evidenceGain(const Blackboard& bb, Id l)
+{
+	const LegEvidence& e = bb.evidence(l);
+	return e.empty() ? 0 : e.logLikelihood(bb.leg(l), bb.params()) - e.count() * logShapeletNull(bb.params());
 }
 }  // namespace
 
@@ -52,24 +71,25 @@ double logJoint(const Blackboard& bb)
 {
 	const ModelParams& p = bb.params();
 	double sum = 0;
-	int overlaps = 0;
+	int boardPairs = 0, contextPairs = 0;  // board pairs are seen from both sides
 	for (Id t = 0; t < bb.tableIdBound(); t++)
 	{
 		if (!bb.hasTable(t)) continue;
 		sum += logCell(logTablePrior(p), p) + logTableConstraints(bb.cornerCounts(t), p);
-		for (Id o = t + 1; o < bb.tableIdBound(); o++)
-			overlaps += bb.hasTable(o) && tableRect(bb.table(t), p).overlaps(tableRect(bb.table(o), p));
+		const Overlaps o = overlappingTables(bb, t);
+		boardPairs += o.board, contextPairs += o.context;
 	}
 	for (Id l = 0; l < bb.legIdBound(); l++)
 	{
 		if (!bb.hasLeg(l)) continue;
 		sum += logCell(logLegDensity(bb, bb.leg(l), bb.leg(l).parent), p);
-		for (Id o = l + 1; o < bb.legIdBound(); o++)
-			overlaps += bb.hasLeg(o) && legRect(bb.leg(l)).overlaps(legRect(bb.leg(o)));
+		sum += evidenceGain(bb, l);  // folded contacts, relative to their null cause
+		const Overlaps o = overlappingLegs(bb, l);
+		boardPairs += o.board, contextPairs += o.context;
 	}
 	for (size_t s = 0; s < bb.shapelets().size(); s++)
 		sum += logShapeletDensity(bb, s, bb.shapeletParent(s));
-	return sum + logOverlap(overlaps, p);
+	return sum + logOverlap(boardPairs / 2 + contextPairs, p);
 }
 
 double logLegLinkGain(const Blackboard& bb, Id leg, Id table)
@@ -91,21 +111,20 @@ double logShapeletLinkGain(const Blackboard& bb, size_t s, Id leg)
 double logOddsTable(const Blackboard& bb, Id table)
 {
 	const ModelParams& p = bb.params();
+	const Overlaps o = overlappingTables(bb, table);
 	double sum = logCell(logTablePrior(p), p) + logTableConstraints(bb.cornerCounts(table), p) +
-				 logOverlap(overlappingTables(bb, table), p);
-	for (Id l = 0; l < bb.legIdBound(); l++)
-		if (bb.hasLeg(l) && bb.leg(l).parent == table)
-			sum += logLegDensity(bb, bb.leg(l), table) - logLegNull(p);
+				 logOverlap(o.board + o.context, p);
+	for (const Id l : bb.legsOf(table)) sum += logLegDensity(bb, bb.leg(l), table) - logLegNull(p);
 	return sum;
 }
 
 double logOddsLeg(const Blackboard& bb, Id leg)
 {
 	const ModelParams& p = bb.params();
+	const Overlaps o = overlappingLegs(bb, leg);
 	double sum = logCell(logLegNull(p), p) + logLegLinkGain(bb, leg, bb.leg(leg).parent) +
-				 logOverlap(overlappingLegs(bb, leg), p);
-	for (size_t s = 0; s < bb.shapelets().size(); s++)
-		if (bb.shapeletParent(s) == leg) sum += logShapeletLinkGain(bb, s, leg);
+				 logOverlap(o.board + o.context, p) + evidenceGain(bb, leg);
+	for (const Id s : bb.shapeletsOf(leg)) sum += logShapeletLinkGain(bb, static_cast<size_t>(s), leg);
 	return sum;
 }
 

@@ -24,9 +24,21 @@ class BlackboardSampler
 	StepResult step(
 		const std::vector<obs::Shapelet>& shapelets, uint64_t seed, int snapshotTemperature = -1);
 
+	/** Algorithm 1 from a given board: one insertion into the lasting map (doc/sampler.md,
+	 *  "Local annealing"). Shapelets without a leg are first associated greedily (link to a
+	 *  nearby leg or a new one, whichever explains them best); that board is the first MAP
+	 *  candidate; then the same schedule and polish run, never visiting dormant hypotheses.
+	 *  The MAP board is best() afterwards. `start` must use this sampler's model. */
+	StepResult anneal(const model::Blackboard& start, uint64_t seed, int snapshotTemperature = -1);
+	/** The best board of the last step() or anneal(). */
+	const model::Blackboard& best() const { return m_best; }
+
 	const SamplerParams& params() const { return m_params; }
 
    private:
+	/** The schedule, the coldest sweeps and the polish from the current board. */
+	void run(StepResult& result, uint64_t seed, int snapshotTemperature);
+	void associate();
 	void sweep(double beta);
 	/** If the board beats the best so far, it becomes the MAP candidate. */
 	void checkpoint(StepResult& result);
@@ -56,8 +68,6 @@ class BlackboardSampler
 	void proposeTableRefit(model::Id t, double beta);
 	void prune();
 	double alongFace(size_t shapelet);
-	/** True if leg `l` explains a shapelet. */
-	bool explains(model::Id l) const;
 	/** True if a leg of `table` not in `except` explains a shapelet. */
 	bool hasSupportedLeg(model::Id table, const std::vector<model::Id>& except) const;
 	/** Removes `table` and then those of its legs that explain no shapelet (the prune would);
@@ -100,7 +110,7 @@ class BlackboardSampler
 	// Scratch, reused across calls (no per-move heap churn once warm).
 	std::vector<model::Id> m_tableOrder, m_legOrder, m_candidates, m_oldParents,
 		m_abandoned, m_orphans, m_mergeable;
-	std::vector<size_t> m_moved;
+	std::vector<model::Id> m_moved;
 	model::Blackboard m_backup;  ///< state before a compound move, to undo it
 	model::Blackboard m_best;  ///< the best board at the coldest temperature (the MAP)
 	std::vector<const obs::Shapelet*> m_contacts;

@@ -1,5 +1,6 @@
 #pragma once
 #include <whiskermap/model/Leg.h>
+#include <whiskermap/model/LegEvidence.h>
 #include <whiskermap/model/ModelParams.h>
 #include <whiskermap/model/Table.h>
 #include <whiskermap/obs/Shapelet.h>
@@ -17,10 +18,12 @@ namespace whiskermap::inference
  *  face line" plus "near (qx, qy)" with weight `pull` (1: a table corner, same sigma_r;
  *  tiny: only fixes the position along a face), then moved along each face so that the face
  *  stays the contact's nearest (not beyond its end; for a contact inside the leg, nearer
- *  its centre than the contact's depth). Texture: mean of the contacts' and the table's. */
+ *  its centre than the contact's depth). Texture: mean of the contacts' and the table's.
+ *  `evidence` (may be null): folded contacts of the leg, weighted as the contacts they
+ *  stand for (their yaw and face-line terms join the means and the least squares). */
 model::Leg fitLeg(
 	const model::ModelParams& p, const obs::Shapelet* const* contacts, size_t n, const model::Table* t,
-	double qx, double qy, double pull);
+	double qx, double qy, double pull, const model::LegEvidence* evidence = nullptr);
 
 /** The table of the known size (leg width and texture of `start`) best fitting `n` >= 1 legs
  *  standing at `corners` (eq. 6, positions and yaws): yaw = the rigid (Procrustes) fit of

@@ -1,6 +1,7 @@
 #pragma once
 #include <whiskermap/model/Factors.h>
 #include <whiskermap/model/HypothesisSet.h>
+#include <whiskermap/model/LegEvidence.h>
 #include <whiskermap/model/ModelParams.h>
 #include <whiskermap/model/SlotVector.h>
 #include <whiskermap/model/SpatialHash.h>
@@ -10,10 +11,18 @@
 
 namespace whiskermap::model
 {
-/** The blackboard (paper section 5): the shapelets of one time step and the hypotheses
- *  currently believed (tables, legs), with stable ids and explicit parent links, plus a
- *  spatial hash per type for "candidates within a radius" and "same-type overlaps".
- *  Links are kept consistent: removing a hypothesis unlinks its children. */
+/** The blackboard (paper section 5): the shapelets of one inference problem and the
+ *  hypotheses currently believed (tables, legs), with stable ids and explicit parent links,
+ *  plus a spatial hash per type for "candidates within a radius" and "same-type overlaps".
+ *  Links are kept consistent: removing a hypothesis unlinks its children; each table knows
+ *  its legs and each leg its shapelets (ascending), so local scores cost the size of a
+ *  Markov blanket, not of the board.
+ *
+ *  For the lasting map (doc/map-plugin.md) a board is one local problem cut out of the map:
+ *  legs may carry folded evidence (LegEvidence: contacts explained earlier), hypotheses may
+ *  be dormant (kept, scored and changeable by their neighbours' moves, but not visited by
+ *  the sampler), and fixed context objects just outside the problem enter the overlap
+ *  factor (eq. 16) only. */
 class Blackboard
 {
    public:
@@ -25,10 +34,10 @@ class Blackboard
 	const ModelParams& params() const { return m_p; }
 
 	Id addTable(const Table& t);
-	/** Adds `l` and links it to l.parent (if not NONE), setting its corner. */
-	Id addLeg(const Leg& l);
+	/** Adds `l` with its folded evidence and links it to l.parent (if not NONE). */
+	Id addLeg(const Leg& l, const LegEvidence& evidence = {});
 	void removeTable(Id id);  ///< its legs lose their parent
-	void removeLeg(Id id);  ///< its shapelets lose their parent
+	void removeLeg(Id id);  ///< its shapelets lose their parent; its evidence goes with it
 	/** Links a leg to `table` (NONE: unlinks); the corner is the argmin of eq. 6. */
 	void setLegParent(Id leg, Id table);
 	void setShapeletParent(size_t shapelet, Id leg);
@@ -38,11 +47,32 @@ class Blackboard
 	/** Moves leg `id` to the pose (and size, texture) of `l`; keeps its parent, re-derives
 	 *  its corner. */
 	void setLeg(Id id, const Leg& l);
+	void setEvidence(Id leg, const LegEvidence& e) { m_evidence[leg] = e; }
 
 	bool hasTable(Id id) const { return m_tables.alive(id); }
 	bool hasLeg(Id id) const { return m_legs.alive(id); }
 	const Table& table(Id id) const { return m_tables[id]; }
 	const Leg& leg(Id id) const { return m_legs[id]; }
+	const LegEvidence& evidence(Id leg) const { return m_evidence[leg]; }
+	/** Child legs of a table, shapelets of a leg: ascending. */
+	const std::vector<Id>& legsOf(Id table) const { return m_tableLegs[table]; }
+	const std::vector<Id>& shapeletsOf(Id leg) const { return m_legShapelets[leg]; }
+	/** True when leg `l` explains data: a shapelet on the board or folded evidence. */
+	bool explains(Id l) const { return !m_legShapelets[l].empty() || !m_evidence[l].empty(); }
+
+	/** Dormant hypotheses are not visited by the sampler (doc/sampler.md); new ones never are. */
+	void setTableDormant(Id id, bool d) { m_tableDormant[id] = d; }
+	void setLegDormant(Id id, bool d) { m_legDormant[id] = d; }
+	bool tableDormant(Id id) const { return m_tableDormant[id]; }
+	bool legDormant(Id id) const { return m_legDormant[id]; }
+
+	/** Fixed objects around the problem: they count in the overlap factor (eq. 16) of the
+	 *  board's hypotheses and nowhere else. */
+	void addContextTable(const Table& t);
+	void addContextLeg(const Leg& l);
+	const std::vector<Table>& contextTables() const { return m_contextTables; }
+	const std::vector<Leg>& contextLegs() const { return m_contextLegs; }
+
 	/** Ids are below these bounds; test hasTable()/hasLeg(). */
 	Id tableIdBound() const { return m_tables.capacity(); }
 	Id legIdBound() const { return m_legs.capacity(); }
@@ -66,6 +96,17 @@ class Blackboard
 	{
 		near(m_legHash, m_legs, x, y, radius, f);
 	}
+	/** Same for the context objects (f gets their index in contextTables()/contextLegs()). */
+	template <class F>
+	void forEachContextTableNear(double x, double y, double radius, F&& f) const
+	{
+		near(m_contextTableHash, m_contextTables, x, y, radius, f);
+	}
+	template <class F>
+	void forEachContextLegNear(double x, double y, double radius, F&& f) const
+	{
+		near(m_contextLegHash, m_contextLegs, x, y, radius, f);
+	}
 	/** Largest half-diagonal of any leg added since reset(): bounds overlap searches. */
 	double maxLegRadius() const { return m_maxLegRadius; }
 
@@ -73,23 +114,30 @@ class Blackboard
 	HypothesisSet compact() const;
 
    private:
-	template <class H, class F>
-	static void near(
-		const SpatialHash& hash, const SlotVector<H>& items, double x, double y, double radius,
-		F& f)
+	template <class Items, class F>
+	static void near(const SpatialHash& hash, const Items& items, double x, double y, double radius, F& f)
 	{
 		hash.forEachNear(x, y, radius, [&](Id id) {
-			const H& h = items[id];
+			const auto& h = items[id];
 			if ((h.x - x) * (h.x - x) + (h.y - y) * (h.y - y) <= radius * radius) f(id);
 		});
 	}
+	static void insertSorted(std::vector<Id>& v, Id id);
+	static void eraseValue(std::vector<Id>& v, Id id);
+	/** Grows the per-id side tables to the slot vectors' capacity. */
+	void grow();
 
 	ModelParams m_p;
 	std::vector<obs::Shapelet> m_shapelets;
 	std::vector<Id> m_shapeletParent;
 	SlotVector<Table> m_tables;
 	SlotVector<Leg> m_legs;
-	SpatialHash m_tableHash, m_legHash;
+	std::vector<LegEvidence> m_evidence;  ///< per leg id
+	std::vector<std::vector<Id>> m_tableLegs, m_legShapelets;  ///< children, per id
+	std::vector<uint8_t> m_tableDormant, m_legDormant;
+	std::vector<Table> m_contextTables;
+	std::vector<Leg> m_contextLegs;
+	SpatialHash m_tableHash, m_legHash, m_contextTableHash, m_contextLegHash;
 	double m_maxLegRadius = 0;
 };
 }  // namespace whiskermap::model

@@ -7,10 +7,13 @@ namespace whiskermap::model
  *
  *  Every present table or leg is a cell (eq. 19) with density p(H | pa(H)) (eq. 12: its
  *  explicit parent's term plus the null cause); absent cells count 1 (their 1 - P ~ 1 is
- *  dropped). Shapelets are data: their densities p(S | pa(S)) enter uncelled. Factors:
- *  phi_a and phi_b per table (eqs. 15, 17), phi_c per overlapping same-type pair (eq. 16). */
+ *  dropped). Shapelets are data: their densities p(S | pa(S)) enter uncelled. A leg's folded
+ *  contacts (LegEvidence) enter as sum log p(S | L) - log c_S: relative to their null cause,
+ *  which is a constant while they are folded. Factors: phi_a and phi_b per table (eqs. 15,
+ *  17), phi_c per overlapping same-type pair (eq. 16), context objects included. */
 
-/** log P(B, shapelets) up to log Z (eq. 14). Brute force over all pairs: the reference. */
+/** log P(B, shapelets) up to a constant (eq. 14). Visits every hypothesis once; overlaps
+ *  through the spatial hash. */
 double logJoint(const Blackboard& bb);
 
 /** Change of logJoint when leg `leg`, currently without a parent or with `table`, is linked

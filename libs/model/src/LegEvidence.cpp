@@ -1,0 +1,142 @@
+#include <whiskermap/core/Angles.h>
+#include <whiskermap/model/Densities.h>
+#include <whiskermap/model/LegEvidence.h>
+
+#include <cmath>
+
+namespace whiskermap::model
+{
+namespace
+{
+double sq(double v) { return v * v; }
+/** Half-extent across leg l's own face j (0, 2: along its x axis; 1, 3: along y). */
+double halfExtent(const Leg& l, int j) { return (((j % 4) + 4) % 2 == 0 ? l.wx : l.wy) / 2; }
+}  // namespace
+
+void LegEvidence::offset(double theta, double& d, int& n) const
+{
+	d = core::angleDiff(theta, m_theta, M_PI_2);
+	n = static_cast<int>(std::lround(core::angleDiff(theta - d, m_theta, 2 * M_PI) / M_PI_2));
+}
+
+void LegEvidence::add(const obs::Shapelet& s, const Leg& l, const ModelParams& p)
+{
+	if (m_count == 0) m_ax = l.x, m_ay = l.y, m_theta = l.theta;
+	// The face nearest to the contact (eq. 7), indexed from the reference yaw.
+	const double faceNormal = legRect(l).perimeter(s.x, s.y).faceNormal;
+	const int k = (static_cast<int>(std::lround(core::angleDiff(faceNormal, m_theta, 2 * M_PI) / M_PI_2)) + 4) % 4;
+	const double wr = 1 / sq(p.sigma_r), wa = 1 / sq(p.sigma_theta), wt = 1 / sq(p.sigma_tau);
+	Face& f = m_face[k];
+	const double ex = s.x - m_ax, ey = s.y - m_ay;
+	f.w += wr, f.sx += wr * ex, f.sy += wr * ey;
+	f.sxx += wr * ex * ex, f.sxy += wr * ex * ey, f.syy += wr * ey * ey;
+	const double a = core::angleDiff(s.normal, m_theta + k * M_PI_2, 2 * M_PI);
+	m_wa += wa, m_sa += wa * a, m_saa += wa * a * a;
+	m_wt += wt, m_st += wt * s.texture, m_stt += wt * s.texture * s.texture;
+	m_count++;
+}
+
+void LegEvidence::merge(const LegEvidence& o)
+{
+	if (o.m_count == 0) return;
+	if (m_count == 0)
+	{
+		*this = o;
+		return;
+	}
+	// o's face k is our face k + n; its angles shift by its reference's offset d.
+	double d = 0;
+	int n = 0;
+	offset(o.m_theta, d, n);
+	const double dx = o.m_ax - m_ax, dy = o.m_ay - m_ay;  // re-anchor o's moments
+	for (int k = 0; k < 4; k++)
+	{
+		const Face& g = o.m_face[k];
+		Face& f = m_face[((k + n) % 4 + 4) % 4];
+		f.w += g.w;
+		f.sx += g.sx + g.w * dx, f.sy += g.sy + g.w * dy;
+		f.sxx += g.sxx + 2 * g.sx * dx + g.w * dx * dx;
+		f.sxy += g.sxy + g.sx * dy + g.sy * dx + g.w * dx * dy;
+		f.syy += g.syy + 2 * g.sy * dy + g.w * dy * dy;
+	}
+	m_wa += o.m_wa, m_sa += o.m_sa + o.m_wa * d, m_saa += o.m_saa + 2 * d * o.m_sa + o.m_wa * d * d;
+	m_wt += o.m_wt, m_st += o.m_st, m_stt += o.m_stt;
+	m_count += o.m_count;
+}
+
+double LegEvidence::logLikelihood(const Leg& l, const ModelParams& p) const
+{
+	if (m_count == 0) return 0;
+	double d = 0;
+	int n = 0;
+	offset(l.theta, d, n);
+	const double gx = l.x - m_ax, gy = l.y - m_ay;
+	double delta = 0;
+	for (int k = 0; k < 4; k++)
+	{
+		const Face& f = m_face[k];
+		if (f.w == 0) continue;
+		// sum w (u.e - t)^2 with t = u.g + h: the contacts' distances to the face line (eq. 7's r).
+		const double a = m_theta + d + k * M_PI_2, ux = std::cos(a), uy = std::sin(a);
+		const double t = ux * gx + uy * gy + halfExtent(l, k - n);
+		delta += ux * ux * f.sxx + 2 * ux * uy * f.sxy + uy * uy * f.syy - 2 * t * (ux * f.sx + uy * f.sy) + f.w * t * t;
+	}
+	delta += m_saa - 2 * d * m_sa + m_wa * d * d;  // normal vs face normal
+	delta += m_stt - 2 * l.texture * m_st + m_wt * l.texture * l.texture;  // texture
+	return m_count * std::log(p.alpha_S) - delta;  // eq. 7 summed
+}
+
+void LegEvidence::addCentreEquations(
+	double theta, double side, const ModelParams& p, double& a11, double& a12, double& a22, double& b1,
+	double& b2) const
+{
+	double d = 0;
+	int n = 0;
+	offset(theta, d, n);
+	const double scale = sq(p.sigma_r);  // weights in units of the model's 1/sigma_r^2
+	for (int k = 0; k < 4; k++)
+	{
+		const Face& f = m_face[k];
+		if (f.w == 0) continue;
+		const double a = m_theta + d + k * M_PI_2, ux = std::cos(a), uy = std::sin(a);
+		const double w = f.w * scale;
+		// world sum w u.s = u.(sum w e + w anchor)
+		const double us = scale * (ux * (f.sx + f.w * m_ax) + uy * (f.sy + f.w * m_ay));
+		a11 += w * ux * ux, a12 += w * ux * uy, a22 += w * uy * uy;
+		b1 += ux * (us - w * side / 2), b2 += uy * (us - w * side / 2);
+	}
+}
+
+double LegEvidence::meanYaw(const ModelParams& p, double& weight) const
+{
+	weight = m_wa * sq(p.sigma_theta);
+	return m_wa > 0 ? m_theta + m_sa / m_wa : m_theta;
+}
+
+double LegEvidence::meanTexture(const ModelParams& p, double& weight) const
+{
+	weight = m_wt * sq(p.sigma_tau);
+	return m_wt > 0 ? m_st / m_wt : 0;
+}
+
+std::array<double, LegEvidence::STATS> LegEvidence::stats() const
+{
+	std::array<double, STATS> v{};
+	size_t i = 0;
+	v[i++] = m_ax, v[i++] = m_ay, v[i++] = m_theta;
+	for (const Face& f : m_face) v[i++] = f.w, v[i++] = f.sx, v[i++] = f.sy, v[i++] = f.sxx, v[i++] = f.sxy, v[i++] = f.syy;
+	v[i++] = m_wa, v[i++] = m_sa, v[i++] = m_saa, v[i++] = m_wt, v[i++] = m_st, v[i++] = m_stt;
+	return v;
+}
+
+LegEvidence LegEvidence::fromStats(const std::array<double, STATS>& v, uint32_t count)
+{
+	LegEvidence e;
+	size_t i = 0;
+	e.m_ax = v[i++], e.m_ay = v[i++], e.m_theta = v[i++];
+	for (Face& f : e.m_face) f.w = v[i++], f.sx = v[i++], f.sy = v[i++], f.sxx = v[i++], f.sxy = v[i++], f.syy = v[i++];
+	e.m_wa = v[i++], e.m_sa = v[i++], e.m_saa = v[i++], e.m_wt = v[i++], e.m_st = v[i++], e.m_stt = v[i++];
+	e.m_count = count;
+	return e;
+}
+}  // namespace whiskermap::model
