@@ -47,7 +47,7 @@ const std::string POSE_HEAD = std::string(TableCsv::PER_POSE_HEADER) + "\n";
 TEST_F(TableCsvTest, ReadsAMap)
 {
 	const auto rows = TableCsv::readMap(write(
-		"map.csv", MAP_HEAD + "0,1.5,2,90,1,0.6,0.05,0.7,0.8,12\r\n7,-1,0.25,-30,1.2,0.5,0.04,0.3,1,1\n"));
+		"map.csv", MAP_HEAD + "0,1.5,2,90,1,0.6,0.05,0.7,0.8,12,3\r\n7,-1,0.25,-30,1.2,0.5,0.04,0.3,1,1,1\n"));
 	ASSERT_EQ(rows.size(), 2u);
 	EXPECT_EQ(rows[0].id, 0);
 	EXPECT_EQ(rows[0].table.x, 1.5);
@@ -58,12 +58,11 @@ TEST_F(TableCsvTest, ReadsAMap)
 	EXPECT_EQ(rows[0].table.leg_width, 0.05);
 	EXPECT_EQ(rows[0].table.texture, 0.7);
 	EXPECT_EQ(rows[0].existence, 0.8);
-	EXPECT_EQ(rows[0].support, 12u);
+	EXPECT_EQ(rows[0].contacts, 12u);
+	EXPECT_EQ(rows[0].legs, 3u);
 	EXPECT_EQ(rows[1].id, 7);
-	EXPECT_EQ(TableCsv::supported(rows, 1).size(), 2u);
-	ASSERT_EQ(TableCsv::supported(rows, 2).size(), 1u);
-	EXPECT_EQ(TableCsv::supported(rows, 2)[0].x, 1.5);
-	EXPECT_TRUE(TableCsv::supported(rows, 13).empty());
+	ASSERT_EQ(TableCsv::tables(rows).size(), 2u);
+	EXPECT_EQ(TableCsv::tables(rows)[1].x, -1.0);
 	EXPECT_TRUE(TableCsv::readMap(write("header_only.csv", MAP_HEAD)).empty());
 }
 
@@ -83,26 +82,27 @@ TEST_F(TableCsvTest, ReadsPerPoseTablesGroupedByPose)
 
 TEST_F(TableCsvTest, ErrorsNameFileAndLine)
 {
-	const std::string good = "0,1,1,0,1,0.6,0.05,0.7,0.5,3\n";
+	const std::string good = "0,1,1,0,1,0.6,0.05,0.7,0.5,3,1\n";
 	const std::string m = map();
 	EXPECT_EQ(
-		mapError("id,x,y,yaw,length,width,leg_width,texture,existence,support\n" + good),
-		m + ": line 1: bad header 'id,x,y,yaw,length,width,leg_width,texture,existence,support' "
+		mapError("id,x,y,yaw,length,width,leg_width,texture,existence,contacts,legs\n" + good),
+		m + ": line 1: bad header 'id,x,y,yaw,length,width,leg_width,texture,existence,contacts,legs' "
 			"(expected '" + TableCsv::MAP_HEADER + "')");
 	EXPECT_EQ(mapError(""), m + ": empty file (expected the header '" + TableCsv::MAP_HEADER + "')");
 	// Data lines after the header -> the error after "<file>: ".
 	const std::vector<std::pair<std::string, std::string>> cases{
-		{good + "1,abc,1,0,1,0.6,0.05,0.7,0.5,3\n", "line 3: column 'x': 'abc' is not a number"},
-		{"1,1,nan,0,1,0.6,0.05,0.7,0.5,3\n", "line 2: column 'y': 'nan' is not finite"},
-		{"1,1,1,inf,1,0.6,0.05,0.7,0.5,3\n", "line 2: column 'yaw_deg': 'inf' is not finite"},
-		{"1,1,1,0,1,0.6,0.05,0.7,0.5\n", "line 2: expected 10 columns, got 9"},
-		{good + "1,1,1,0,1,0.6,0.05,0.7,0.5,3,\n", "line 3: expected 10 columns, got 11"},
-		{good + "\n", "line 3: expected 10 columns, got 0"},
-		{"1,1,1,0,1,0.6,0.05,0.7,0.5,\n", "line 2: column 'support': '' is not a number"},
-		{"1,1,1,0,1,0.6,0.05,0.7,0.5, 3\n", "line 2: column 'support': ' 3' is not a number"},
-		{"1,1,1,0,1,0.6,0.05,0.7,0.5,2.5\n", "line 2: column 'support': '2.5' is not a whole number"},
-		{"1,1,1,0,1,0.6,0.05,0.7,1.5,2\n", "line 2: column 'existence': '1.5' is out of range [0, 1]"},
-		{"1,1,1,0,0,0.6,0.05,0.7,1,2\n", "line 2: column 'length': '0' is out of range [1e-06, 10000]"},
+		{good + "1,abc,1,0,1,0.6,0.05,0.7,0.5,3,1\n", "line 3: column 'x': 'abc' is not a number"},
+		{"1,1,nan,0,1,0.6,0.05,0.7,0.5,3,1\n", "line 2: column 'y': 'nan' is not finite"},
+		{"1,1,1,inf,1,0.6,0.05,0.7,0.5,3,1\n", "line 2: column 'yaw_deg': 'inf' is not finite"},
+		{"1,1,1,0,1,0.6,0.05,0.7,0.5\n", "line 2: expected 11 columns, got 9"},
+		{good + "1,1,1,0,1,0.6,0.05,0.7,0.5,3,1,\n", "line 3: expected 11 columns, got 12"},
+		{good + "\n", "line 3: expected 11 columns, got 0"},
+		{"1,1,1,0,1,0.6,0.05,0.7,0.5,,1\n", "line 2: column 'contacts': '' is not a number"},
+		{"1,1,1,0,1,0.6,0.05,0.7,0.5, 3,1\n", "line 2: column 'contacts': ' 3' is not a number"},
+		{"1,1,1,0,1,0.6,0.05,0.7,0.5,2.5,1\n", "line 2: column 'contacts': '2.5' is not a whole number"},
+		{"1,1,1,0,1,0.6,0.05,0.7,0.5,3,5\n", "line 2: column 'legs': '5' is out of range [0, 4]"},
+		{"1,1,1,0,1,0.6,0.05,0.7,1.5,2,1\n", "line 2: column 'existence': '1.5' is out of range [0, 1]"},
+		{"1,1,1,0,0,0.6,0.05,0.7,1,2,1\n", "line 2: column 'length': '0' is out of range [1e-06, 10000]"},
 		{good + good, "line 3: duplicate id 0"},
 	};
 	for (const auto& [rows, error] : cases) EXPECT_EQ(mapError(MAP_HEAD + rows), m + ": " + error);

@@ -131,9 +131,16 @@ TEST(Densities, ShapeletGivenLegByHand)
 	s = {0.0, -0.05, -M_PI_2, 0.5, 0};
 	l.theta = M_PI_2;
 	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0, 1e-9);
-	// A normal pointing into the leg is wrong by pi: (pi / 0.1)^2.
+	// A normal pointing into the leg: the best face is the opposite one (+y, normal pi/2),
+	// 0.1 m away: (0.1 / 0.01)^2 = 100, less than the pi error on its own face.
 	s.normal = M_PI_2;
-	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - std::pow(M_PI / 0.1, 2), 1e-6);
+	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - 100.0, 1e-6);
+	// Just past a corner of the leg, on the bisector's wrong side: the face its normal names
+	// counts (distance 0.1 mm past the corner along +x, normal of the -y face), not the
+	// nearest face by position (+x, a quarter turn off: (pi/2 / 0.1)^2 = 247).
+	s = {0.0501, -0.05, -M_PI_2, 0.5, 0};
+	l.theta = 0;
+	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - std::pow(0.0001 / 0.01, 2), 1e-9);
 	// Angle wraps: -pi + 0.05 against pi (the -x face) is 0.05 apart.
 	s = {-0.05, 0.0, -M_PI + 0.05, 0.5, 0};
 	l.theta = 0;

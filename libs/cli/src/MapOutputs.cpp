@@ -73,10 +73,11 @@ MapOutputs::MapOutputs(OutputDir& out, const maps::CHierarchicalObjectMap& map, 
 	: m_out(out),
 	  m_map(map),
 	  m_s(s),
-	  m_perPose(out.path("per_pose_tables.csv")),
 	  m_montage(s.x0, s.x1, s.y0, s.y1),
 	  m_contacts(s.x0, s.x1, s.y0, s.y1)
 {
+	if (m_map.lasting()) return;
+	m_perPose.emplace(out.path("per_pose_tables.csv"));
 	if (s.world) m_eval.emplace(s.world->tables, eval::EvalOptions{}, true);
 }
 
@@ -84,9 +85,18 @@ void MapOutputs::onStep(size_t index, const obs::RawlogReader::Sweep& sweep, dou
 {
 	const auto& rec = m_map.lastRecord();
 	const auto& shapelets = m_map.lastInput().shapelets;
-	m_perPose.add(index, rec);
-	m_montage.robot(rec.pose, POSES);
-	for (const auto& t : rec.tables) m_montage.table(t, ESTIMATE, 1);
+	if (m_perPose)
+	{
+		m_perPose->add(index, rec);
+		m_montage.robot(rec.pose, POSES);
+		for (const auto& t : rec.tables) m_montage.table(t, ESTIMATE, 1);
+	}
+	else if (m_map.lastLastingStats().changed)
+	{
+		m_insertions++;
+		m_visited += m_map.lastLastingStats().visited;
+		m_board += m_map.lastLastingStats().boardHypotheses;
+	}
 	for (const auto& sh : shapelets)
 	{
 		m_contacts.shapelet(sh, CONTACTS);
@@ -155,20 +165,31 @@ void MapOutputs::writeScene(const std::string& path) const
 
 std::string MapOutputs::finish(double wallSeconds)
 {
-	m_perPose.close();
-	maps::MapCsv::writeObjects(m_out.path("map_tables.csv"), m_map.objects());
+	const auto objects = m_map.mapObjects();  // the map, computed once
+	std::vector<world::Table> mapped;
+	for (const auto& o : objects) mapped.push_back(o.table);
+	const auto candidates = m_map.candidateObjects();
+	maps::MapCsv::writeObjects(m_out.path("map_tables.csv"), objects);
+	maps::MapCsv::writeObjects(m_out.path("map_candidates.csv"), candidates);
 
 	const std::string source = std::filesystem::path(m_s.input).filename().string();
-	drawTruth(m_montage, m_s.world);
-	m_montage.caption(source + ": per-pose MAP tables (red), poses (grey)" + (m_s.world ? ", truth (blue)" : ""));
-	m_montage.save(m_out.path("montage.png"));
+	if (m_perPose)
+	{
+		m_perPose->close();
+		drawTruth(m_montage, m_s.world);
+		m_montage.caption(source + ": per-pose MAP tables (red), poses (grey)" + (m_s.world ? ", truth (blue)" : ""));
+		m_montage.save(m_out.path("montage.png"));
+	}
 
 	drawTruth(m_contacts, m_s.world);
-	const auto mapped = m_map.supportedTables();  // the map as used, computed once
 	for (const auto& t : mapped) m_contacts.table(t, ESTIMATE, 2);
+	char threshold[64];
+	if (m_map.lasting())
+		std::snprintf(threshold, sizeof(threshold), "existence >= %g", m_map.likelihoodOptions.min_existence);
+	else
+		std::snprintf(threshold, sizeof(threshold), "support >= %u", m_map.likelihoodOptions.min_support);
 	m_contacts.caption(
-		"map: " + std::to_string(mapped.size()) + " tables, support >= " +
-		std::to_string(m_map.likelihoodOptions.min_support) + " (red), contacts (green)" +
+		source + ": map of " + std::to_string(mapped.size()) + " tables, " + threshold + " (red), contacts (green)" +
 		(m_s.world ? ", truth (blue)" : ""));
 	m_contacts.save(m_out.path("map.png"));
 
@@ -193,7 +214,7 @@ std::string MapOutputs::finish(double wallSeconds)
 	{
 		eval::EvalReport r;
 		r.map = eval::MapEvaluation::compute(m_s.world->tables, mapped, r.options);
-		r.perPose = m_eval->result();
+		if (m_eval) r.perPose = m_eval->result();
 		r.identifiability =
 			eval::Identifiability::of(*m_s.world, m_kept, eval::Identifiability::defaultGate(m_kept));
 		metricsJson = r.toJson();
@@ -202,12 +223,12 @@ std::string MapOutputs::finish(double wallSeconds)
 		f << metricsJson;
 		if (!f) throw core::Error("metrics.json: write failed");
 	}
-	writeSummary(m_out.path("summary.json"), wallSeconds, mapped.size(), metricsJson);
+	writeSummary(m_out.path("summary.json"), wallSeconds, mapped.size(), candidates.size(), metricsJson);
 	return text;
 }
 
 void MapOutputs::writeSummary(
-	const std::string& path, double wallSeconds, size_t mapped, const std::string& metricsJson) const
+	const std::string& path, double wallSeconds, size_t mapped, size_t candidates, const std::string& metricsJson) const
 {
 	double totalMs = 0;
 	uint64_t proposals = 0;
@@ -220,12 +241,26 @@ void MapOutputs::writeSummary(
 	f << "{\n";
 	f << "  \"input\": \"" << m_s.input << "\",\n  \"config\": \"" << m_s.config << "\",\n";
 	f << "  \"seed\": " << m_map.insertionOptions.seed << ",\n  \"jobs\": " << m_s.jobs << ",\n";
+	f << "  \"mode\": \"" << (m_map.lasting() ? "lasting" : "per_pose") << "\",\n";
 	f << "  \"poses\": " << m_steps << ",\n  \"shapelets\": " << m_shapeletCount << ",\n";
-	std::snprintf(buf, sizeof(buf), "  \"tables_per_pose\": {\"mean\": %.4f, \"max\": %zu},\n",
-				  m_steps ? double(m_tables) / m_steps : 0.0, m_maxTables);
-	f << buf;
-	f << "  \"map_objects\": " << m_map.objects().size()
-	  << ",\n  \"map_objects_supported\": " << mapped << ",\n";
+	if (m_map.lasting())
+	{
+		const auto& st = m_map.lastingMap().state();
+		std::snprintf(buf, sizeof(buf),
+					  "  \"local_problem\": {\"insertions\": %llu, \"mean_visited\": %.2f, \"mean_hypotheses\": %.2f},\n",
+					  static_cast<unsigned long long>(m_insertions), m_insertions ? double(m_visited) / m_insertions : 0.0,
+					  m_insertions ? double(m_board) / m_insertions : 0.0);
+		f << buf;
+		f << "  \"state\": {\"tables\": " << st.tableCount() << ", \"legs\": " << st.legCount()
+		  << ", \"explicit_contacts\": " << st.contactCount() << "},\n";
+	}
+	else
+	{
+		std::snprintf(buf, sizeof(buf), "  \"tables_per_pose\": {\"mean\": %.4f, \"max\": %zu},\n",
+					  m_steps ? double(m_tables) / m_steps : 0.0, m_maxTables);
+		f << buf;
+	}
+	f << "  \"map_tables\": " << mapped << ",\n  \"map_candidates\": " << candidates << ",\n";
 	f << "  \"moves\": {";
 	for (size_t k = 0; k < inference::MOVE_COUNT; k++)
 		f << (k ? ", " : "") << "\"" << MOVE_NAMES[k] << "\": {\"proposed\": " << m_map.proposed()[k]

@@ -28,6 +28,23 @@ void MapRunner::add(const obs::RawlogReader::Sweep& sweep)
 void MapRunner::flush()
 {
 	const size_t n = m_batch.size();
+	if (m_map.lasting())
+	{
+		// Each insertion builds on the map the previous ones left: in order, on this thread.
+		for (size_t i = 0; i < n; i++)
+		{
+			const auto t0 = std::chrono::steady_clock::now();
+			const mrpt::poses::CPose3D pose(m_batch[i].robotPose);
+			m_map.insertObservation(*m_batch[i].obs, pose);
+			const double ms = msSince(t0);
+			for (auto& other : m_multimap.maps)
+				if (other.get() != &m_map) other->insertObservation(*m_batch[i].obs, pose);
+			m_onStep(m_done + i, m_batch[i], ms);
+		}
+		m_done += n;
+		m_batch.clear();
+		return;
+	}
 	// Inputs in order (the working memory slides sweep by sweep) ...
 	std::vector<maps::TStepInput> inputs;
 	inputs.reserve(n);

@@ -16,7 +16,6 @@ struct Options
 {
 	std::string world, map, perPose, rawlog;
 	size_t poses = 0;
-	uint32_t minSupport = 1;
 	bool json = false;
 	eval::EvalOptions eval;
 };
@@ -27,7 +26,7 @@ int run(const Options& o)
 	const auto w = world::World::load(o.world);
 	eval::EvalReport report;
 	report.options = o.eval;
-	const auto estimated = eval::TableCsv::supported(eval::TableCsv::readMap(o.map), o.minSupport);
+	const auto estimated = eval::TableCsv::tables(eval::TableCsv::readMap(o.map));
 	report.map = eval::MapEvaluation::compute(w.tables, estimated, o.eval);
 
 	std::vector<obs::RawlogReader::Sweep> sweeps;
@@ -100,10 +99,6 @@ int WhiskerEvalApp::main(int argc, char** argv)
 		->capture_default_str();
 	app.add_option("--ospa-p", o.eval.ospa_p, "OSPA order p (>= 1)")
 		->check(CLI::Range(1.0, 100.0))
-		->capture_default_str();
-	app.add_option(
-		   "--min-support", o.minSupport,
-		   "Ignore map objects merged from fewer than N per-pose MAP tables (1 keeps all)")
 		->capture_default_str();
 	app.add_option(
 		   "--local-radius", o.eval.local_radius,

@@ -21,11 +21,11 @@ namespace
 {
 struct Options
 {
-	std::string input, config, outdir, world;
+	std::string input, config, outdir, world, mode;
 	std::optional<uint64_t> seed;
 	int snapshotPose = -1, snapshotTemperature = 0;
 	unsigned jobs = 1;
-	bool quiet = false, simpleMap = false;
+	bool quiet = false, simpleMap = false, reverse = false;
 };
 
 /** Picture bounds: the arena when known, else the robot positions plus whisker reach. */
@@ -56,6 +56,10 @@ int run(Options& o)
 	auto map = multimap.mapByClass<maps::CHierarchicalObjectMap>();
 	if (!map) throw core::Error(o.config + ": no hierarchicalObjectMap was created (is libwhiskermap-maps loaded?)");
 	if (o.seed) map->insertionOptions.seed = *o.seed;
+	using TMode = maps::CHierarchicalObjectMap::TInsertionOptions::TMode;
+	if (!o.mode.empty()) map->insertionOptions.mode = o.mode == "lasting" ? TMode::Lasting : TMode::PerPose;
+	if (o.snapshotPose >= 0 && map->lasting())
+		throw core::Error("--snapshot-pose draws a per-pose blackboard: it needs --mode per_pose");
 	map->insertionOptions.keep_history = false;  // the outputs stream instead
 	if (o.snapshotTemperature >= static_cast<int>(map->samplerParams.schedule.size()))
 		throw core::Error("--snapshot-temperature " + std::to_string(o.snapshotTemperature) + ": the schedule has only " +
@@ -77,7 +81,15 @@ int run(Options& o)
 		if (bar && i % 100 == 0) std::fprintf(stderr, "\rwhisker-map: %zu sweeps", i + 1);
 	});
 	if (o.snapshotPose >= 0) runner.snapshot(static_cast<size_t>(o.snapshotPose), o.snapshotTemperature);
-	const auto contents = obs::RawlogReader::forEach(o.input, [&](const obs::RawlogReader::Sweep& sw) { runner.add(sw); });
+	obs::RawlogReader::Contents contents;
+	if (o.reverse)
+	{
+		// The whole log in memory, then its sweeps last to first.
+		contents = obs::RawlogReader::read(o.input);
+		for (auto it = contents.sweeps.rbegin(); it != contents.sweeps.rend(); ++it) runner.add(*it);
+	}
+	else
+		contents = obs::RawlogReader::forEach(o.input, [&](const obs::RawlogReader::Sweep& sw) { runner.add(sw); });
 	runner.flush();
 	if (bar) std::fprintf(stderr, "\rwhisker-map: %zu sweeps\n", contents.sweepCount);
 	if (contents.sweepCount == 0)
@@ -100,12 +112,20 @@ int WhiskerMapApp::main(int argc, char** argv)
 	CLI::App app{
 		"whisker-map: map tables from whisker contacts. Runs a CHierarchicalObjectMap (Fox & "
 		"Prescott's hierarchical model and annealed blackboard sampler) over every whisker sweep "
-		"of a rawlog (either MRPT layout) and writes, in OUTDIR: per_pose_tables.csv, "
-		"map_tables.csv, montage.png, map.png, map.3Dscene, map.bt (OctoMap), summary.json, and with --world metrics.json (doc/outputs.md)."};
+		"of a rawlog (either MRPT layout) and writes, in OUTDIR: map_tables.csv (the map), "
+		"map_candidates.csv, map.png, map.3Dscene, map.bt (OctoMap), summary.json, with --world "
+		"metrics.json, and in the per-pose mode per_pose_tables.csv and montage.png (doc/outputs.md)."};
 	Options o;
 	app.add_option("-i,--input", o.input, "Input rawlog with CObservationWhiskerContacts sweeps")->required();
 	app.add_option("-c,--config", o.config, "CMultiMetricMap .ini (default: the shipped config/whisker-map.ini)");
 	app.add_option("-o,--out", o.outdir, "Output folder (created; files in it are replaced only when the run succeeds)")->required();
+	app.add_option("--mode", o.mode,
+				   "lasting: one map fusing every contact (default of the shipped config); per_pose: the "
+				   "paper's independent steps on the 7 latest contacts, merged by votes (overrides insertOpts mode)")
+		->check(CLI::IsMember({"lasting", "per_pose"}));
+	app.add_flag("--reverse", o.reverse,
+				 "Insert the sweeps last to first (reads the whole rawlog into memory): how much the map "
+				 "depends on the order of the evidence");
 	app.add_option("--seed", o.seed, "Override the map's base seed (insertOpts seed); same seed, same maps");
 	app.add_option("--world", o.world,
 				   "Ground-truth world .ini: drawn in the pictures, and the maps are evaluated against it "
@@ -117,7 +137,9 @@ int WhiskerMapApp::main(int argc, char** argv)
 				   "Schedule index (0 = hottest) of the --snapshot-pose blackboard picture")
 		->check(CLI::NonNegativeNumber)
 		->capture_default_str();
-	app.add_option("-j,--jobs", o.jobs, "Threads solving sampler steps; outputs are identical for any value")
+	app.add_option("-j,--jobs", o.jobs,
+				   "Per-pose mode: threads solving sampler steps; outputs are identical for any value (the "
+				   "lasting mode inserts in order on one thread)")
 		->check(CLI::Range(1u, 256u))
 		->capture_default_str();
 	app.add_flag("--simplemap", o.simpleMap,

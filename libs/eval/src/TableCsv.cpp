@@ -124,7 +124,8 @@ std::vector<TableCsv::MapRow> TableCsv::readMap(const std::string& path)
 		m.id = r.integer(0, 1e9);
 		m.table = r.table();
 		m.existence = r.number(8, 0, 1);
-		m.support = static_cast<uint32_t>(r.integer(9, 4e9));
+		m.contacts = static_cast<uint64_t>(r.integer(9, 1e15));
+		m.legs = static_cast<uint32_t>(r.integer(10, 4));
 		if (!ids.insert(m.id).second) r.fail("duplicate id " + std::to_string(m.id));
 		rows.push_back(m);
 	});
@@ -145,11 +146,10 @@ std::vector<std::vector<world::Table>> TableCsv::readPerPose(const std::string& 
 	return perPose;
 }
 
-std::vector<world::Table> TableCsv::supported(const std::vector<MapRow>& rows, uint32_t minSupport)
+std::vector<world::Table> TableCsv::tables(const std::vector<MapRow>& rows)
 {
-	std::vector<world::Table> tables;
-	for (const auto& r : rows)
-		if (r.support >= minSupport) tables.push_back(r.table);
-	return tables;
+	std::vector<world::Table> out;
+	for (const auto& r : rows) out.push_back(r.table);
+	return out;
 }
 }  // namespace whiskermap::eval

@@ -1,12 +1,15 @@
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/inference/BlackboardSampler.h>
 #include <whiskermap/inference/PoseFit.h>
+#include <whiskermap/inference/TableProposals.h>
 #include <whiskermap/model/Densities.h>
 #include <whiskermap/model/Posterior.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <cstdio>
+#include <cstdlib>
 
 namespace whiskermap::inference
 {
@@ -45,6 +48,7 @@ StepResult BlackboardSampler::anneal(const model::Blackboard& start, uint64_t se
 	m_rng.seed(seed);
 	associate();
 	checkpoint(result);  // the map as it was, with the new contacts associated: the first candidate
+	result.initialLogPosterior = result.logPosterior;
 	run(result, seed ^ 0x5DEECE66Dull, snapshotTemperature);
 	return result;
 }
@@ -230,7 +234,7 @@ void BlackboardSampler::visitLeg(Id l, double beta)
 void BlackboardSampler::proposeTableDeath(Id t, double beta)
 {
 	m_backup = m_bb;
-	if (!accept(Move::Death, removeTableAndOrphans(t), beta)) m_bb = m_backup;
+	if (!accept(Move::Death, removeTableAndOrphans(m_bb, t, m_orphans), beta)) m_bb = m_backup;
 }
 
 // A new parent for a leg: any other table with a corner within the gate, or none.
@@ -350,6 +354,7 @@ bool BlackboardSampler::proposeMerge(Id l, Id other, double beta)
 		gain += model::logOddsLeg(m_bb, l);
 	}
 	const bool fitted = refitInPlace(l, gain);
+	if (getenv("WMDBG") && greedy(beta)) fprintf(stderr, "merge %d<-%d fitted %d gain %.3f at %.4f %.4f\n", l, other, fitted, gain, m_bb.leg(l).x, m_bb.leg(l).y);
 	if (fitted && accept(Move::Child, gain, beta)) return true;
 	m_bb.setLeg(l, oldL);
 	m_bb.setEvidence(l, oldEvidence);
@@ -401,18 +406,18 @@ void BlackboardSampler::proposeTableForLeg(Id l, double beta)
 {
 	constexpr double ADOPT_WEIGHT = 4;
 	m_tables.clear();
-	for (int i = 0; i < 8; i++) m_tables.push_back(tableWithLegAt(m_bb.leg(l), i / 2, i % 2 ? M_PI_2 : 0.0));
-	tablesForPairs(l);
+	for (int i = 0; i < 8; i++) m_tables.push_back(tableWithLegAt(m_model, m_bb.leg(l), i / 2, i % 2 ? M_PI_2 : 0.0));
+	tablesForPairs(m_bb, l, m_tables);
 	m_weights.clear();
 	double total = 0;
 	for (const Table& t : m_tables)
-		total += m_weights.emplace_back(std::pow(ADOPT_WEIGHT, static_cast<double>(adoptable(t, l))));
+		total += m_weights.emplace_back(std::pow(ADOPT_WEIGHT, static_cast<double>(adoptable(m_bb, t, l, m_candidates))));
 	size_t choice = 0;
 	for (double u = uniform() * total; choice + 1 < m_tables.size() && u >= m_weights[choice]; choice++)
 		u -= m_weights[choice];
 	// The chosen table, fitted to all the legs it adopts (PoseFit.h), then adopting anew.
 	Table chosen = m_tables[choice];
-	adoptable(chosen, l);  // fills m_candidates with the adopted legs
+	adoptable(m_bb, chosen, l, m_candidates);  // fills m_candidates with the adopted legs
 	m_candidates.push_back(l);
 	m_fitLegs.clear();
 	m_fitCorners.clear();
@@ -422,7 +427,7 @@ void BlackboardSampler::proposeTableForLeg(Id l, double beta)
 		m_fitCorners.push_back(model::logLegGivenTable(m_bb.leg(a), chosen, m_model).corner);
 	}
 	if (m_candidates.size() > 1) chosen = fitTable(m_model, chosen, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
-	adoptable(chosen, l);
+	adoptable(m_bb, chosen, l, m_candidates);
 	m_candidates.push_back(l);
 
 	// Tables the adopted legs leave without any leg that explains a shapelet are pruned at
@@ -450,7 +455,7 @@ void BlackboardSampler::proposeTableForLeg(Id l, double beta)
 	const Id id = m_bb.addTable(chosen);
 	for (const Id a : m_candidates) m_bb.setLegParent(a, id);
 	logOdds += model::logOddsTable(m_bb, id);
-	for (const Id p : m_abandoned) logOdds += removeTableAndOrphans(p);
+	for (const Id p : m_abandoned) logOdds += removeTableAndOrphans(m_bb, p, m_orphans);
 	if (accept(Move::Parent, logOdds, beta)) return;
 	if (!m_abandoned.empty())
 	{
@@ -466,75 +471,6 @@ bool BlackboardSampler::hasSupportedLeg(Id table, const std::vector<Id>& except)
 	for (const Id l : m_bb.legsOf(table))
 		if (m_bb.explains(l) && std::find(except.begin(), except.end(), l) == except.end()) return true;
 	return false;
-}
-
-double BlackboardSampler::removeTableAndOrphans(Id table)
-{
-	double logOdds = -model::logOddsTable(m_bb, table);
-	m_orphans.clear();
-	for (const Id l : m_bb.legsOf(table))
-		if (!m_bb.explains(l)) m_orphans.push_back(l);
-	m_bb.removeTable(table);
-	for (const Id l : m_orphans)
-	{
-		logOdds -= model::logOddsLeg(m_bb, l);
-		m_bb.removeLeg(l);
-	}
-	return logOdds;
-}
-
-Table BlackboardSampler::tableWithLegAt(const Leg& leg, int corner, double turn) const
-{
-	Table t;
-	t.theta = leg.theta + turn;
-	t.leg_width = m_model.leg_width;
-	t.texture = m_model.texture;
-	double cx = 0, cy = 0;  // the corner of a table centred at the origin
-	model::tableCorner(t, corner, m_model, cx, cy);
-	t.x = leg.x - cx;
-	t.y = leg.y - cy;
-	return t;
-}
-
-void BlackboardSampler::tablesForPairs(Id l)
-{
-	const double gate = m_model.parent_gate, diagonal = std::hypot(m_model.table_length, m_model.table_width);
-	Table frame = tableWithLegAt(m_bb.leg(l), 0, 0);
-	frame.x = frame.y = frame.theta = 0;
-	double cx[4], cy[4];
-	for (int c = 0; c < 4; c++) model::tableCorner(frame, c, m_model, cx[c], cy[c]);
-	m_bb.forEachLegNear(m_bb.leg(l).x, m_bb.leg(l).y, diagonal + 2 * gate, [&](Id o) {
-		const model::Leg* pair[2] = {&m_bb.leg(l), &m_bb.leg(o)};
-		const double d = std::hypot(pair[1]->x - pair[0]->x, pair[1]->y - pair[0]->y);
-		// l at corner 0 or 1, o at another: with the 180 deg symmetry these are all the tables
-		// (each corner distance twice: the table and its mirror image across the pair).
-		for (int a = 0; a < 2 && o != l; a++)
-			for (int b = 0; b < 4; b++)
-			{
-				const int corners[2] = {a, b};
-				if (b != a && std::abs(std::hypot(cx[a] - cx[b], cy[a] - cy[b]) - d) <= 2 * gate)
-					m_tables.push_back(fitTable(m_model, frame, pair, corners, 2));
-			}
-	});
-}
-
-size_t BlackboardSampler::adoptable(const Table& t, Id l)
-{
-	bool taken[4] = {false, false, false, false};
-	taken[model::logLegGivenTable(m_bb.leg(l), t, m_model).corner] = true;
-	m_candidates.clear();
-	const double reach = std::hypot(m_model.table_length, m_model.table_width) / 2 + m_model.parent_gate;
-	m_bb.forEachLegNear(t.x, t.y, reach, [&](Id o) {
-		if (o == l) return;
-		const Leg& leg = m_bb.leg(o);
-		const int c = model::logLegGivenTable(leg, t, m_model).corner;
-		double cx = 0, cy = 0;
-		model::tableCorner(t, c, m_model, cx, cy);
-		if (taken[c] || std::hypot(cx - leg.x, cy - leg.y) > m_model.parent_gate) return;
-		taken[c] = true;
-		m_candidates.push_back(o);
-	});
-	return m_candidates.size();
 }
 
 bool BlackboardSampler::fittedLeg(Id l, const Table* t, Leg& out)

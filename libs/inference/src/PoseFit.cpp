@@ -53,28 +53,27 @@ model::Leg fitLeg(
 	if (folded) evidence->addCentreEquations(theta, w, p, a11, a12, a22, b1, b2);
 	const double det = a11 * a22 - a12 * a12;
 	double px = (a22 * b1 - a12 * b2) / det, py = (a11 * b2 - a12 * b1) / det;
-	// A contact must lie along its face less far from the face centre than its height h above
-	// the leg centre: else another face is nearer (OrientedRect::perimeter) and its normal
-	// is wrong. With h >= w/2 that is "not beyond the end of the face".
-	constexpr double MARGIN = 1e-4;
-	for (int round = 0; round < 3; round++)
+	// Contacts on the faces of one axis only leave the leg free along those faces (but for the
+	// pull): slide it so that their contacts lie on the faces, not past their ends (eq. 7
+	// counts the distance past a corner), or centre it on them if they spread wider.
+	double axisWeight[2] = {0, 0};
+	if (folded) evidence->axisWeights(theta, axisWeight[0], axisWeight[1]);
+	for (size_t i = 0; i < n; i++)
+		axisWeight[static_cast<int>(std::lround(core::angleDiff(s[i]->normal, theta, 2 * M_PI) / M_PI_2)) & 1] += 1;
+	for (int axis = 0; axis < 2; axis++)
+	{
+		if (axisWeight[axis] == 0 || axisWeight[1 - axis] > 0) continue;
+		// Along the faces of `axis`: the direction of the other axis.
+		const double vx = -std::sin(theta + axis * M_PI_2), vy = std::cos(theta + axis * M_PI_2);
+		double lo = std::numeric_limits<double>::infinity(), hi = -lo;
 		for (size_t i = 0; i < n; i++)
 		{
-			const double a = -uy[i] * (s[i]->x - px) + ux[i] * (s[i]->y - py);  // along the face
-			const double h = ux[i] * (s[i]->x - px) + uy[i] * (s[i]->y - py);
-			const double half = std::clamp(h - MARGIN, 0.0, w / 2);
-			const double excess = a - std::clamp(a, -half, half);
-			px -= uy[i] * excess, py += ux[i] * excess;
+			const double a = vx * (s[i]->x - px) + vy * (s[i]->y - py);
+			lo = std::min(lo, a), hi = std::max(hi, a);
 		}
-	// Contacts spread wider than the face cannot all lie on it: push the leg inward along the
-	// normal until each is nearer the face centre than its height (a slightly far contact is
-	// cheap; a contact taking the adjacent face costs its 90 deg normal error).
-	for (size_t i = 0; i < n; i++)
-	{
-		const double a = -uy[i] * (s[i]->x - px) + ux[i] * (s[i]->y - py);
-		const double h = ux[i] * (s[i]->x - px) + uy[i] * (s[i]->y - py);
-		const double push = std::abs(a) + MARGIN - h;
-		if (push > 0) px -= ux[i] * push, py -= uy[i] * push;
+		if (lo > hi) continue;  // only folded contacts: the pull decides
+		const double shift = hi - lo >= w ? (lo + hi) / 2 : std::max(0.0, hi - w / 2) + std::min(0.0, lo + w / 2);
+		px += vx * shift, py += vy * shift;
 	}
 	double texture = t ? t->texture : 0, textureWeight = n + (t ? 1 : 0);
 	for (size_t i = 0; i < n; i++) texture += s[i]->texture;

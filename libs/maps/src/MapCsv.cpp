@@ -31,14 +31,16 @@ void writeTable(FILE* f, const world::Table& t)
 }
 }  // namespace
 
-void MapCsv::writeObjects(const std::string& path, const std::vector<TMapObject>& objects)
+void MapCsv::writeObjects(const std::string& path, const std::vector<TMappedObject>& objects)
 {
-	writeFile(path, "id,x,y,yaw_deg,length,width,leg_width,texture,existence,support", [&](FILE* f) {
+	writeFile(path, "id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs", [&](FILE* f) {
 		for (size_t i = 0; i < objects.size(); i++)
 		{
 			std::fprintf(f, "%zu,", i);
 			writeTable(f, objects[i].table);
-			std::fprintf(f, ",%.4f,%u\n", objects[i].existence(), objects[i].support);
+			std::fprintf(
+				f, ",%.4f,%llu,%u\n", objects[i].existence, static_cast<unsigned long long>(objects[i].contacts),
+				objects[i].legs);
 		}
 	});
 }

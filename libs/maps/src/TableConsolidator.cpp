@@ -78,23 +78,24 @@ void TableConsolidator::addPose(
 		o.table.yaw = 0.5 * std::atan2(o.sum_sin2, o.sum_cos2);  // circular mean modulo pi
 		index(best);
 	}
-	// Older objects this pose touched on a leg but did not find count it against them.
+	// Contacts on an object's legs count on it; older objects this pose touched on a leg but
+	// did not find count it against them.
 	std::vector<uint32_t> touched;
 	for (const auto& s : shapelets)
 	{
 		near(s.x, s.y, m_reach + m_opts.evidence_margin, m_near);
 		for (uint32_t i : m_near)
 		{
-			if (i >= before || std::find(matched.begin(), matched.end(), i) != matched.end() ||
-				std::find(touched.begin(), touched.end(), i) != touched.end())
-				continue;
-			const auto& t = m_objects[i].table;
-			for (int k = 0; k < 4; k++)
-				if (t.leg(k, 0).distance({s.x, s.y}) <= m_opts.evidence_margin)
-				{
-					touched.push_back(i);
-					break;
-				}
+			auto& o = m_objects[i];
+			int leg = -1;
+			for (int k = 0; k < 4 && leg < 0; k++)
+				if (o.table.leg(k, 0).distance({s.x, s.y}) <= m_opts.evidence_margin) leg = k;
+			if (leg < 0) continue;
+			o.contacts++;
+			o.legMask = static_cast<uint8_t>(o.legMask | (1u << leg));
+			if (i < before && std::find(matched.begin(), matched.end(), i) == matched.end() &&
+				std::find(touched.begin(), touched.end(), i) == touched.end())
+				touched.push_back(i);
 		}
 	}
 	for (uint32_t i : touched) m_objects[i].evidence++;

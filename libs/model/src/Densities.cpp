@@ -67,11 +67,15 @@ LegFit logLegGivenTable(const Leg& l, const Table& t, const ModelParams& p)
 
 double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelParams& p)
 {
-	const auto hit = legRect(l).perimeter(s.x, s.y);
-	const double delta = sq(hit.distance / p.sigma_r) +
-						 sq(core::angleDiff(s.normal, hit.faceNormal, 2 * M_PI) / p.sigma_theta) +
-						 sq((l.texture - s.texture) / p.sigma_tau);
-	return std::log(p.alpha_S) - delta;  // eq. 7
+	// eq. 7 with the face that explains the contact best: distance to that face (a segment)
+	// and the contact's normal against the face's outward normal (mod 360 deg).
+	const OrientedRect r = legRect(l);
+	double best = std::numeric_limits<double>::infinity();
+	for (int k = 0; k < 4; k++)
+		best = std::min(
+			best, sq(r.faceDistance(s.x, s.y, k) / p.sigma_r) +
+					  sq(core::angleDiff(s.normal, l.theta + k * M_PI_2, 2 * M_PI) / p.sigma_theta));
+	return std::log(p.alpha_S) - best - sq((l.texture - s.texture) / p.sigma_tau);  // eq. 7
 }
 
 double logLegNull(const ModelParams& p) { return std::log(p.c_L); }  // eq. 8

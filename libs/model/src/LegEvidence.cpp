@@ -3,6 +3,7 @@
 #include <whiskermap/model/LegEvidence.h>
 
 #include <cmath>
+#include <limits>
 
 namespace whiskermap::model
 {
@@ -22,10 +23,23 @@ void LegEvidence::offset(double theta, double& d, int& n) const
 void LegEvidence::add(const obs::Shapelet& s, const Leg& l, const ModelParams& p)
 {
 	if (m_count == 0) m_ax = l.x, m_ay = l.y, m_theta = l.theta;
-	// The face nearest to the contact (eq. 7), indexed from the reference yaw.
-	const double faceNormal = legRect(l).perimeter(s.x, s.y).faceNormal;
-	const int k = (static_cast<int>(std::lround(core::angleDiff(faceNormal, m_theta, 2 * M_PI) / M_PI_2)) + 4) % 4;
+	// The contact's face: the one of the leg that explains it best in eq. 7's own terms
+	// (distance to the face's line and normal against the face's normal), indexed from the
+	// reference yaw. Near a corner of a leg that is still a little off, the face nearest by
+	// position alone can be the wrong one; the normal then tells.
 	const double wr = 1 / sq(p.sigma_r), wa = 1 / sq(p.sigma_theta), wt = 1 / sq(p.sigma_tau);
+	double d = 0;
+	int n = 0;
+	offset(l.theta, d, n);
+	int k = 0;
+	double best = std::numeric_limits<double>::infinity();
+	for (int f = 0; f < 4; f++)
+	{
+		const double a = m_theta + d + f * M_PI_2, ux = std::cos(a), uy = std::sin(a);
+		const double r = ux * (s.x - l.x) + uy * (s.y - l.y) - halfExtent(l, f - n);
+		const double cost = wr * r * r + wa * sq(core::angleDiff(s.normal, a, 2 * M_PI));
+		if (cost < best) best = cost, k = f;
+	}
 	Face& f = m_face[k];
 	const double ex = s.x - m_ax, ey = s.y - m_ay;
 	f.w += wr, f.sx += wr * ex, f.sy += wr * ey;
@@ -105,6 +119,15 @@ void LegEvidence::addCentreEquations(
 		a11 += w * ux * ux, a12 += w * ux * uy, a22 += w * uy * uy;
 		b1 += ux * (us - w * side / 2), b2 += uy * (us - w * side / 2);
 	}
+}
+
+void LegEvidence::axisWeights(double theta, double& x, double& y) const
+{
+	double d = 0;
+	int n = 0;
+	offset(theta, d, n);
+	x = y = 0;
+	for (int k = 0; k < 4; k++) (((k - n) % 2 + 2) % 2 == 0 ? x : y) += m_face[k].w;
 }
 
 double LegEvidence::meanYaw(const ModelParams& p, double& weight) const

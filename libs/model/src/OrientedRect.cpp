@@ -21,6 +21,18 @@ OrientedRect::PerimeterHit OrientedRect::perimeter(double x, double y) const
 	return {distance, core::wrapToPi(faceNormal)};
 }
 
+double OrientedRect::faceDistance(double x, double y, int k) const
+{
+	const double c = std::cos(theta), s = std::sin(theta);
+	const double dx = x - cx, dy = y - cy;
+	const double lx = c * dx + s * dy, ly = -s * dx + c * dy;
+	// Along the face's normal (u) and along the face (v), in the face's own frame.
+	const double u = k == 0 ? lx : k == 1 ? ly : k == 2 ? -lx : -ly;
+	const double v = k % 2 == 0 ? ly : lx;
+	const double halfNormal = k % 2 == 0 ? hx : hy, halfAlong = k % 2 == 0 ? hy : hx;
+	return std::hypot(u - halfNormal, std::max(std::abs(v) - halfAlong, 0.0));
+}
+
 bool OrientedRect::overlaps(const OrientedRect& o) const
 {
 	const double dx = o.cx - cx, dy = o.cy - cy;

@@ -15,9 +15,10 @@
 namespace whiskermap::cli
 {
 /** whisker-map's outputs (doc/outputs.md), written as the sweeps stream through the map:
- *  per-pose rows, montage and contact drawing, robot path and contacts for the 3-D scene
- *  (evenly decimated beyond a bound) and per-pose evaluation accumulate step by step, so
- *  memory stays bounded however long the run; finish() writes the rest. */
+ *  contact drawing, robot path and contacts for the 3-D scene (evenly decimated beyond a
+ *  bound) and, in the per-pose mode, per-pose rows, montage and per-pose evaluation
+ *  accumulate step by step, so memory stays bounded however long the run; finish() writes
+ *  the rest. */
 class MapOutputs
 {
    public:
@@ -45,12 +46,13 @@ class MapOutputs
    private:
 	void drawSnapshot(size_t index);
 	void writeScene(const std::string& path) const;
-	void writeSummary(const std::string& path, double wallSeconds, size_t mapped, const std::string& metricsJson) const;
+	void writeSummary(
+		const std::string& path, double wallSeconds, size_t mapped, size_t candidates, const std::string& metricsJson) const;
 
 	OutputDir& m_out;
 	const maps::CHierarchicalObjectMap& m_map;
 	TSettings m_s;
-	maps::PerPoseCsvWriter m_perPose;
+	std::optional<maps::PerPoseCsvWriter> m_perPose;  ///< per-pose mode only
 	render::TopDownImage m_montage, m_contacts;
 	Decimator<mrpt::poses::CPose2D> m_path{20000};
 	Decimator<obs::Shapelet> m_shapelets{50000};
@@ -58,5 +60,6 @@ class MapOutputs
 	std::vector<obs::RawlogReader::Sweep> m_kept;  ///< for identifiability or the simple map
 	std::vector<double> m_ms;
 	size_t m_steps = 0, m_shapeletCount = 0, m_tables = 0, m_maxTables = 0;
+	uint64_t m_visited = 0, m_board = 0, m_insertions = 0;  ///< lasting mode: local problem sizes
 };
 }  // namespace whiskermap::cli

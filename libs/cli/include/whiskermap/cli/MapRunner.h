@@ -8,14 +8,17 @@
 
 namespace whiskermap::cli
 {
-/** Feeds sweeps to a CMultiMetricMap holding a CHierarchicalObjectMap, solving the sampler
- *  steps of a batch of sweeps on `jobs` threads (each with its own StepSolver) and
- *  integrating them in sweep order: the results are identical for any number of jobs.
- *  Other maps of the multimap receive every sweep too, in order. */
+/** Feeds sweeps to a CMultiMetricMap holding a CHierarchicalObjectMap. In the per-pose mode
+ *  it solves the sampler steps of a batch of sweeps on `jobs` threads (each with its own
+ *  StepSolver) and integrates them in sweep order: the results are identical for any number
+ *  of jobs. In the lasting mode each insertion depends on the previous ones: sweeps are
+ *  inserted in order on the calling thread. Other maps of the multimap receive every sweep
+ *  too, in order. */
 class MapRunner
 {
    public:
-	/** Called after each sweep is integrated, in order. `ms`: the step's solve + integrate time. */
+	/** Called after each sweep is integrated, in order. `ms`: the insertion's time (per-pose
+	 *  mode: the step's solve + integrate time). */
 	using OnStep = std::function<void(size_t index, const obs::RawlogReader::Sweep&, double ms)>;
 
 	MapRunner(mrpt::maps::CMultiMetricMap& multimap, maps::CHierarchicalObjectMap& map, unsigned jobs, OnStep onStep);

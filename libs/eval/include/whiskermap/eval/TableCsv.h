@@ -15,20 +15,21 @@ class TableCsv
 {
    public:
 	static constexpr const char* MAP_HEADER =
-		"id,x,y,yaw_deg,length,width,leg_width,texture,existence,support";
+		"id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs";
 	static constexpr const char* PER_POSE_HEADER =
 		"pose,x,y,yaw_deg,length,width,leg_width,texture,log_posterior";
 
-	/** One object of the consolidated map. */
+	/** One object of a map. */
 	struct MapRow
 	{
 		long id = 0;
 		world::Table table;
 		double existence = 0;  ///< in [0, 1]
-		uint32_t support = 0;  ///< per-pose MAP tables merged into it
+		uint64_t contacts = 0;  ///< contacts its legs explain
+		uint32_t legs = 0;  ///< legs with a contact, 0..4
 	};
 
-	/** `map_tables.csv`. Ids must be distinct. */
+	/** `map_tables.csv` (or `map_candidates.csv`). Ids must be distinct. */
 	static std::vector<MapRow> readMap(const std::string& path);
 
 	/** `per_pose_tables.csv`: element i holds the tables of pose i, for poses 0 .. poses-1
@@ -36,7 +37,7 @@ class TableCsv
 	static std::vector<std::vector<world::Table>> readPerPose(
 		const std::string& path, size_t poses);
 
-	/** The tables of the rows with support >= minSupport, in row order. */
-	static std::vector<world::Table> supported(const std::vector<MapRow>& rows, uint32_t minSupport);
+	/** The tables of the rows, in row order. */
+	static std::vector<world::Table> tables(const std::vector<MapRow>& rows);
 };
 }  // namespace whiskermap::eval

@@ -70,16 +70,6 @@ class BlackboardSampler
 	double alongFace(size_t shapelet);
 	/** True if a leg of `table` not in `except` explains a shapelet. */
 	bool hasSupportedLeg(model::Id table, const std::vector<model::Id>& except) const;
-	/** Removes `table` and then those of its legs that explain no shapelet (the prune would);
-	 *  returns the change of logJoint. */
-	double removeTableAndOrphans(model::Id table);
-	/** The table of the known size with `leg` at `corner`, turned by `turn` from its yaw. */
-	model::Table tableWithLegAt(const model::Leg& leg, int corner, double turn) const;
-	/** Tables of the known size with `l` and another leg near it at two of their corners
-	 *  (pair distance within 2 gates of the corners' distance), appended to m_tables. */
-	void tablesForPairs(model::Id l);
-	/** Fills m_candidates with the legs other than `l` that table `t` would adopt; their count. */
-	size_t adoptable(const model::Table& t, model::Id l);
 	/** Closed-form pose (PoseFit.h) of leg `l` for its contacts (m_contacts, filled here) and,
 	 *  with `t`, the corner of `t` nearest to it. False if there is nothing to fit or the fit
 	 *  leaves a contact or the corner outside the parent gate. */

@@ -27,6 +27,8 @@ struct StepResult
 	 *  Its tables are the answer of eq. 18; legs and shapelet links come with it. */
 	model::HypothesisSet map;
 	double logPosterior = -std::numeric_limits<double>::infinity();  ///< logJoint of `map`
+	/** anneal(): logJoint of the starting board once the new contacts were associated. */
+	double initialLogPosterior = -std::numeric_limits<double>::infinity();
 
 	std::array<uint32_t, MOVE_COUNT> proposed{};  ///< indexed by Move
 	std::array<uint32_t, MOVE_COUNT> accepted{};

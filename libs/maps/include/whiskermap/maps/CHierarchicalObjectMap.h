@@ -5,8 +5,10 @@
 #include <whiskermap/inference/BlackboardSampler.h>
 #include <whiskermap/inference/SamplerParams.h>
 #include <whiskermap/inference/ShapeletMemory.h>
+#include <whiskermap/maps/LastingMap.h>
 #include <whiskermap/maps/StepSolver.h>
 #include <whiskermap/maps/SweepLikelihood.h>
+#include <whiskermap/maps/TMappedObject.h>
 #include <whiskermap/maps/TPoseRecord.h>
 #include <whiskermap/maps/TableConsolidator.h>
 #include <whiskermap/model/ModelParams.h>
@@ -19,15 +21,19 @@ namespace whiskermap::maps
 {
 /** A hierarchical object map built from whisker contacts: an MRPT metric map (CMetricMap),
  *  created by name ("hierarchicalObjectMap") from a CMultiMetricMap .ini, so it plugs into
- *  MRPT's pipelines and particle filters.
+ *  MRPT's pipelines and particle filters. Two modes (insertOpts `mode`):
  *
- *  - insertObservation(CObservationWhiskerContacts, robot pose) runs one time step of the
- *    annealed blackboard sampler (Fox & Prescott's Algorithm 1) on the working memory of the
- *    most recent shapelets, records the step's MAP tables (per-pose records, as the paper
- *    collates them) and merges them into a consolidated object map.
- *  - computeObservationLikelihood(sweep, pose) casts each whisker against the consolidated
- *    map's legs (SweepLikelihood).
- *  Options and their .ini sections: doc/map-plugin.md, config/whisker-map.ini. */
+ *  - `lasting` (default): one hierarchical state fuses every contact ever inserted
+ *    (LastingMap): insertObservation(CObservationWhiskerContacts, robot pose) explains the
+ *    sweep's contacts in the context of the map around them (annealed blackboard sampler,
+ *    Fox & Prescott's Algorithm 1, run locally); each table carries its posterior existence
+ *    probability; the map is the tables with existence >= min_existence.
+ *  - `per_pose` (the paper's): one sampler step per sweep on the working memory of the most
+ *    recent shapelets, its MAP tables recorded per pose (the paper's figs. 5-7) and merged
+ *    into a consolidated map by votes (TableConsolidator).
+ *
+ *  computeObservationLikelihood(sweep, pose) casts each whisker against the map's legs
+ *  (SweepLikelihood). Options and their .ini sections: doc/map-plugin.md, config/whisker-map.ini. */
 class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 {
 	DEFINE_SERIALIZABLE(CHierarchicalObjectMap, whiskermap::maps)
@@ -36,7 +42,14 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	/** [<prefix>_insertOpts]: working memory, seeding, consolidation. */
 	struct TInsertionOptions : public mrpt::config::CLoadableOptions
 	{
-		size_t memory_size = 7;  ///< shapelets in working memory (paper: 7)
+		enum class TMode : uint8_t
+		{
+			Lasting,  ///< one lasting state fusing every contact (LastingMap)
+			PerPose  ///< the paper's independent steps on the working memory, then votes
+		};
+		TMode mode = TMode::Lasting;
+		LastingMap::TOptions lasting;  ///< the lasting mode's options
+		size_t memory_size = 7;  ///< per-pose mode: shapelets in working memory (paper: 7)
 		uint64_t seed = 1;  ///< step k uses a seed derived from (seed, k)
 		/** Raise the model's sigma_r, sigma_theta, sigma_tau to the noise each sweep reports
 		 *  when it is larger (the paper's eq. 7 uses the sensor noise), scaling parent_gate
@@ -55,7 +68,10 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	struct TLikelihoodOptions : public mrpt::config::CLoadableOptions
 	{
 		SweepLikelihood::TOptions sweep;
-		uint32_t min_support = 3;  ///< objects supported by fewer poses are ignored
+		/** Lasting mode: the map holds the tables at least this probable (0.5: those more
+		 *  likely there than not). */
+		double min_existence = 0.5;
+		uint32_t min_support = 3;  ///< per-pose mode: objects supported by fewer poses are ignored
 		void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
 		void dumpToTextStream(std::ostream& out) const override;
 	};
@@ -76,14 +92,31 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	model::ModelParams modelParams;  ///< [<prefix>_model]
 	inference::SamplerParams samplerParams;  ///< [<prefix>_sampler]
 
-	/** Per inserted sweep, in order (empty unless insertionOptions.keep_history). */
+	bool lasting() const { return insertionOptions.mode == TInsertionOptions::TMode::Lasting; }
+
+	/** The map: lasting mode, the tables with existence >= min_existence; per-pose mode, the
+	 *  consolidated objects with support >= min_support, best supported first, leaving out
+	 *  any that overlaps one already taken (eq. 16). What the likelihood, the pictures, the
+	 *  exports and the evaluation use, and what map_tables.csv holds. */
+	std::vector<TMappedObject> mapObjects() const;
+	/** Everything else the map considered: tables below min_existence, objects below
+	 *  min_support or overlapping a better one (map_candidates.csv). */
+	std::vector<TMappedObject> candidateObjects() const;
+	/** The tables of mapObjects(). */
+	std::vector<world::Table> mapTables() const;
+	/** The lasting state (lasting mode). */
+	const LastingMap& lastingMap() const { return m_lasting; }
+	/** What the last lasting insertion did. */
+	const LastingMap::TStats& lastLastingStats() const { return m_lastLasting; }
+
+	/** Per-pose mode: per inserted sweep, in order (empty unless insertionOptions.keep_history). */
 	const std::vector<TPoseRecord>& poseRecords() const { return m_poses; }
 	/** The record and the input of the last inserted sweep. */
 	const TPoseRecord& lastRecord() const { return m_lastRecord; }
 	const TStepInput& lastInput() const { return m_lastInput; }
 	/** Sweeps inserted so far. */
 	uint64_t steps() const { return m_steps; }
-	/** The consolidated objects. */
+	/** Per-pose mode: the consolidated objects (all of them). */
 	const std::vector<TMapObject>& objects() const { return m_consolidator.objects(); }
 	/** Every shapelet inserted, world frame (empty unless insertionOptions.keep_history). */
 	const std::vector<obs::Shapelet>& shapelets() const { return m_shapelets; }
@@ -91,13 +124,13 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	const std::array<uint64_t, inference::MOVE_COUNT>& proposed() const { return m_proposed; }
 	const std::array<uint64_t, inference::MOVE_COUNT>& accepted() const { return m_accepted; }
 
-	/** The last step's full result (MAP blackboard, snapshot if asked for). */
+	/** Per-pose mode: the last step's full result (MAP blackboard, snapshot if asked for). */
 	const inference::StepResult& lastStep() const { return m_lastStep; }
 
-	/** insertObservation in two halves, for callers that solve steps elsewhere (in parallel,
-	 *  with one StepSolver per thread): prepareStep() takes the sweep into the working
-	 *  memory and fixes the step's input; integrateStep() records the solved step and
-	 *  consolidates it. Calls must alternate, in sweep order. */
+	/** Per-pose mode: insertObservation in two halves, for callers that solve steps
+	 *  elsewhere (in parallel, with one StepSolver per thread): prepareStep() takes the sweep
+	 *  into the working memory and fixes the step's input; integrateStep() records the solved
+	 *  step and consolidates it. Calls must alternate, in sweep order. */
 	TStepInput prepareStep(const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose);
 	void integrateStep(TStepInput in, inference::StepResult result);
 	/** Ask the next insertions for a blackboard snapshot at this schedule index (-1: none). */
@@ -106,13 +139,9 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	/** A model table as a full table of the known size, yaw in (-90, 90] degrees (it is the
 	 *  same table turned by 180). */
 	world::Table toWorldTable(const model::Table& t) const;
-	/** The map as used for likelihoods, pictures, exports and evaluation: indices of the
-	 *  objects with support >= likelihoodOptions.min_support, best supported first, leaving
-	 *  out any that overlaps one already taken (no two tables overlap, eq. 16). */
+	/** Per-pose mode: indices of the objects in the map (see mapObjects()). */
 	std::vector<size_t> supported() const;
-	/** The tables of supported(). */
-	std::vector<world::Table> supportedTables() const;
-	/** Legs of supportedTables(), as solids (cached until the map changes; thread-safe). */
+	/** Legs of mapTables(), as solids (cached until the map changes; thread-safe). */
 	const std::vector<world::Obstacle>& mappedLegs() const;
 
 	// See base class docs
@@ -135,6 +164,8 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
    private:
 	std::vector<TPoseRecord> m_poses;
 	TableConsolidator m_consolidator;
+	LastingMap m_lasting;
+	LastingMap::TStats m_lastLasting;
 	std::vector<obs::Shapelet> m_shapelets;
 	inference::ShapeletMemory m_memory;
 	std::array<uint64_t, inference::MOVE_COUNT> m_proposed{}, m_accepted{};
@@ -149,7 +180,8 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	{
 		std::vector<world::Obstacle> legs;
 		bool valid = false;
-		uint32_t support = 0;
+		uint32_t support = 0;  ///< the thresholds the legs were selected with
+		double existence = -1;
 		std::mutex mutex;
 		LegCache() = default;
 		LegCache(const LegCache&) {}
@@ -167,6 +199,11 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	mutable LegCache m_legCache;
 	/** The model a sweep with this noise is scored with. */
 	model::ModelParams modelFor(const obs::TSensorNoise& noise) const;
+	/** Lasting mode: one insertion. */
+	void insertLasting(const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose);
+	/** A consolidated object (per-pose mode) or a lasting table, as written out. */
+	TMappedObject mapped(const TMapObject& o) const;
+	TMappedObject mapped(model::Id table) const;
 
 	MAP_DEFINITION_START(CHierarchicalObjectMap)
 	TInsertionOptions insertionOptions;

@@ -1,5 +1,5 @@
 #pragma once
-#include <whiskermap/maps/TMapObject.h>
+#include <whiskermap/maps/TMappedObject.h>
 #include <whiskermap/maps/TPoseRecord.h>
 
 #include <string>
@@ -11,8 +11,9 @@ namespace whiskermap::maps
  *  renamed when complete. Throws core::Error when a file cannot be written. */
 struct MapCsv
 {
-	/** `id,x,y,yaw_deg,length,width,leg_width,texture,existence,support`, one row per object. */
-	static void writeObjects(const std::string& path, const std::vector<TMapObject>& objects);
+	/** `id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs`, one row per
+	 *  object (id = its row index). */
+	static void writeObjects(const std::string& path, const std::vector<TMappedObject>& objects);
 	/** `pose,x,y,yaw_deg,length,width,leg_width,texture,log_posterior`, one row per MAP table
 	 *  per pose (pose = 0-based index of the sweep; poses without tables have no row). */
 	static void writePerPose(const std::string& path, const std::vector<TPoseRecord>& poses);

@@ -12,6 +12,8 @@ struct TMapObject
 	world::Table table;
 	uint32_t support = 0;  ///< per-pose MAP tables merged into it
 	uint32_t evidence = 0;  ///< poses, since it was first found, with a contact on one of its legs
+	uint64_t contacts = 0;  ///< contacts within the evidence margin of one of its legs
+	uint8_t legMask = 0;  ///< bit k: leg k had such a contact
 	/** Fraction of the poses with evidence on it whose MAP found it, in [0, 1]. */
 	double existence() const { return evidence ? double(support) / evidence : 0.0; }
 

@@ -37,8 +37,11 @@ struct LegFit
 };
 LegFit logLegGivenTable(const Leg& l, const Table& t, const ModelParams& p);
 
-/** log p(S | L) = log alpha_S - Delta_LS (eq. 7), r the exact distance to the leg's perimeter
- *  and the normal compared with the outward normal of the nearest face. */
+/** log p(S | L) = log alpha_S - Delta_LS (eq. 7). The leg's face that explains the contact
+ *  best counts: r is the exact distance to that face (a segment of the perimeter) and the
+ *  normal is compared with its outward normal (mod 360 deg). Away from the corners that is
+ *  the nearest face; near a corner it keeps a contact whose position noise crossed the
+ *  corner's bisector on the face its normal names (doc/model.md). */
 double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelParams& p);
 
 /** Null causes: a leg without a table (eq. 8), a shapelet without a leg (eq. 9). */

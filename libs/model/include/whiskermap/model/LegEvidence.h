@@ -12,8 +12,9 @@ namespace whiskermap::model
  *  evidence of every contact it ever explained in constant memory per leg (doc/model.md,
  *  "Folded evidence").
  *
- *  A folded contact keeps the face it lay on when folded (the leg face nearest to it, as in
- *  eq. 7) and the weights 1/sigma^2 of the model that scored it. For the leg at any pose,
+ *  A folded contact keeps the face it lay on when folded (the leg face that explains it best
+ *  in eq. 7's terms: distance to the face's line and normal against the face's normal) and
+ *  the weights 1/sigma^2 of the model that scored it. For the leg at any pose,
  *  the sum of Delta_LS (eq. 7) over the folded contacts is then a quadratic in the leg's
  *  centre, yaw and texture: r is the distance to the line of the contact's face, the angle
  *  error is the contact's normal against that face's normal. This equals eq. 7 while each
@@ -37,6 +38,9 @@ class LegEvidence
 	void addCentreEquations(
 		double theta, double side, const ModelParams& p, double& a11, double& a12, double& a22, double& b1,
 		double& b2) const;
+	/** Weights of the folded contacts on the faces across the leg's x axis (faces 0, 2) and
+	 *  across its y axis (1, 3), for the leg at yaw `theta`. */
+	void axisWeights(double theta, double& x, double& y) const;
 	/** Weighted mean yaw of the folded contacts (modulo 90 degrees, near the reference yaw)
 	 *  and its weight in units of 1/sigma_theta^2 of `p`; weight 0 when empty. */
 	double meanYaw(const ModelParams& p, double& weight) const;

@@ -17,6 +17,10 @@ struct OrientedRect
 	};
 	PerimeterHit perimeter(double x, double y) const;
 
+	/** Exact distance from a point to face k (the side whose outward normal is
+	 *  theta + k pi/2), a segment: 0, 2 across the x axis; 1, 3 across the y axis. */
+	double faceDistance(double x, double y, int k) const;
+
 	/** True when the two rectangles share interior points (separating-axis test; touching
 	 *  edges do not count). */
 	bool overlaps(const OrientedRect& o) const;

@@ -1,0 +1,113 @@
+#include <whiskermap/core/Angles.h>
+#include <whiskermap/inference/PoseFit.h>
+#include <whiskermap/inference/TableExistence.h>
+#include <whiskermap/inference/TableProposals.h>
+#include <whiskermap/model/Densities.h>
+#include <whiskermap/model/Posterior.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace whiskermap::inference
+{
+using model::Id;
+using model::Leg;
+using model::NONE;
+using model::Table;
+
+namespace
+{
+/** Two tables are the same hypothesis when their centres agree within a quarter of the
+ *  table's width and their yaws (mod 180 deg) within 15 degrees: distinct hypotheses on the
+ *  same legs (mirror images, other corners) are at least half a width or 60 degrees apart. */
+bool same(const Table& a, const Table& b, const model::ModelParams& p)
+{
+	return std::hypot(a.x - b.x, a.y - b.y) <= p.table_width / 4 &&
+		   std::abs(core::angleDiff(a.theta, b.theta, M_PI)) <= core::deg2rad(15);
+}
+}  // namespace
+
+std::vector<double> TableExistence::of(const model::Blackboard& bb)
+{
+	const model::ModelParams& p = bb.params();
+	std::vector<double> out(static_cast<size_t>(bb.tableIdBound()), 0.0);
+	for (Id t = 0; t < bb.tableIdBound(); t++)
+	{
+		if (!bb.hasTable(t)) continue;
+		model::Blackboard without = bb;
+		const double sT = -removeTableAndOrphans(without, t, m_orphans);
+		// Rivals: pair tables through the legs of t that explain contacts.
+		m_rivals.clear();
+		std::vector<Id> supported;
+		for (const Id l : bb.legsOf(t))
+			if (bb.explains(l)) supported.push_back(l);
+		double rivals = 0;  // sum of exp(s_R - s_T)
+		m_scored.assign(1, bb.table(t));
+		for (const Id l : supported)
+		{
+			m_rivals.clear();
+			tablesForPairs(without, l, m_rivals);
+			for (const Table& r : m_rivals)
+			{
+				// The rival as it settles on the legs it adopts; counted once, and never when it
+				// settles on t itself.
+				model::Blackboard trial = without;
+				Table settled = r;
+				const double sR = scoreRival(trial, settled, l);
+				if (std::any_of(m_scored.begin(), m_scored.end(), [&](const Table& s) { return same(s, settled, p); }))
+					continue;
+				m_scored.push_back(settled);
+				rivals += std::exp(std::min(sR - sT, 700.0));
+			}
+		}
+		out[static_cast<size_t>(t)] = 1 / (1 + std::exp(std::min(-sT, 700.0)) + rivals);
+	}
+	return out;
+}
+
+double TableExistence::scoreRival(model::Blackboard& bb, Table& t, Id leg)
+{
+	const model::ModelParams& p = bb.params();
+	// Adopt the free legs the table reaches (with `leg`), fit the table to them, adopt anew.
+	for (int round = 0; round < 2; round++)
+	{
+		adoptable(bb, t, leg, m_adopted);
+		m_adopted.erase(
+			std::remove_if(m_adopted.begin(), m_adopted.end(), [&](Id a) { return bb.leg(a).parent != NONE; }),
+			m_adopted.end());
+		m_adopted.push_back(leg);
+		if (round == 1) break;
+		m_fitLegs.clear();
+		m_fitCorners.clear();
+		for (const Id a : m_adopted)
+		{
+			m_fitLegs.push_back(&bb.leg(a));
+			m_fitCorners.push_back(model::logLegGivenTable(bb.leg(a), t, p).corner);
+		}
+		t = fitTable(p, t, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
+	}
+	if (bb.leg(leg).parent != NONE) return -1e300;  // the pair leg belongs to another table
+	const Id id = bb.addTable(t);
+	for (const Id a : m_adopted) bb.setLegParent(a, id);
+	double s = model::logOddsTable(bb, id);
+	// Invented legs at the empty corners, where they pay (eq. 20 of each).
+	const model::CornerCounts counts = bb.cornerCounts(id);
+	for (int c = 0; c < 4; c++)
+	{
+		if (counts[c] > 0) continue;
+		Leg l;
+		model::tableCorner(t, c, p, l.x, l.y);
+		l.theta = t.theta;
+		l.wx = l.wy = t.leg_width;
+		l.texture = t.texture;
+		l.parent = id;
+		const Id li = bb.addLeg(l);
+		const double gain = model::logOddsLeg(bb, li);
+		if (gain > 0)
+			s += gain;
+		else
+			bb.removeLeg(li);
+	}
+	return s;
+}
+}  // namespace whiskermap::inference

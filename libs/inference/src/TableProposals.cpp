@@ -1,0 +1,84 @@
+#include <whiskermap/inference/PoseFit.h>
+#include <whiskermap/inference/TableProposals.h>
+#include <whiskermap/model/Densities.h>
+#include <whiskermap/model/Posterior.h>
+
+#include <cmath>
+
+namespace whiskermap::inference
+{
+using model::Id;
+using model::Leg;
+using model::Table;
+
+double removeTableAndOrphans(model::Blackboard& bb, Id table, std::vector<Id>& orphans)
+{
+	double logOdds = -model::logOddsTable(bb, table);
+	orphans.clear();
+	for (const Id l : bb.legsOf(table))
+		if (!bb.explains(l)) orphans.push_back(l);
+	bb.removeTable(table);
+	for (const Id l : orphans)
+	{
+		logOdds -= model::logOddsLeg(bb, l);
+		bb.removeLeg(l);
+	}
+	return logOdds;
+}
+
+Table tableWithLegAt(const model::ModelParams& p, const Leg& leg, int corner, double turn)
+{
+	Table t;
+	t.theta = leg.theta + turn;
+	t.leg_width = p.leg_width;
+	t.texture = p.texture;
+	double cx = 0, cy = 0;  // the corner of a table centred at the origin
+	model::tableCorner(t, corner, p, cx, cy);
+	t.x = leg.x - cx;
+	t.y = leg.y - cy;
+	return t;
+}
+
+void tablesForPairs(const model::Blackboard& bb, Id l, std::vector<Table>& out)
+{
+	const model::ModelParams& p = bb.params();
+	const double gate = p.parent_gate, diagonal = std::hypot(p.table_length, p.table_width);
+	Table frame = tableWithLegAt(p, bb.leg(l), 0, 0);
+	frame.x = frame.y = frame.theta = 0;
+	double cx[4], cy[4];
+	for (int c = 0; c < 4; c++) model::tableCorner(frame, c, p, cx[c], cy[c]);
+	bb.forEachLegNear(bb.leg(l).x, bb.leg(l).y, diagonal + 2 * gate, [&](Id o) {
+		const model::Leg* pair[2] = {&bb.leg(l), &bb.leg(o)};
+		const double d = std::hypot(pair[1]->x - pair[0]->x, pair[1]->y - pair[0]->y);
+		// l at corner 0 or 1, o at another: with the 180 deg symmetry these are all the tables
+		// (each corner distance twice: the table and its mirror image across the pair).
+		for (int a = 0; a < 2 && o != l; a++)
+			for (int b = 0; b < 4; b++)
+			{
+				const int corners[2] = {a, b};
+				if (b != a && std::abs(std::hypot(cx[a] - cx[b], cy[a] - cy[b]) - d) <= 2 * gate)
+					out.push_back(fitTable(p, frame, pair, corners, 2));
+			}
+	});
+}
+
+size_t adoptable(const model::Blackboard& bb, const Table& t, Id l, std::vector<Id>& out)
+{
+	const model::ModelParams& p = bb.params();
+	bool taken[4] = {false, false, false, false};
+	taken[model::logLegGivenTable(bb.leg(l), t, p).corner] = true;
+	out.clear();
+	const double reach = std::hypot(p.table_length, p.table_width) / 2 + p.parent_gate;
+	bb.forEachLegNear(t.x, t.y, reach, [&](Id o) {
+		if (o == l) return;
+		const Leg& leg = bb.leg(o);
+		const int c = model::logLegGivenTable(leg, t, p).corner;
+		double cx = 0, cy = 0;
+		model::tableCorner(t, c, p, cx, cy);
+		if (taken[c] || std::hypot(cx - leg.x, cy - leg.y) > p.parent_gate) return;
+		taken[c] = true;
+		out.push_back(o);
+	});
+	return out.size();
+}
+}  // namespace whiskermap::inference

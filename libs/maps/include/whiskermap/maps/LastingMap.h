@@ -1,0 +1,75 @@
+#pragma once
+#include <whiskermap/inference/BlackboardSampler.h>
+#include <whiskermap/inference/TableExistence.h>
+#include <whiskermap/model/LastingState.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace whiskermap::maps
+{
+/** The lasting map (doc/map-plugin.md): one hierarchical state (model::LastingState) that
+ *  every inserted sweep updates where its contacts fall. An insertion adds the sweep's
+ *  contacts, cuts the local problem around them out of the state, associates them with the
+ *  legs there and anneals it (inference::BlackboardSampler::anneal: earlier decisions nearby
+ *  can be revised), scores each table's existence (inference::TableExistence), writes the
+ *  result back and folds old contacts into their legs' evidence. */
+class LastingMap
+{
+   public:
+	struct TOptions
+	{
+		/** Legs within this distance (m) of a new contact, and tables with a corner that
+		 *  close, are visited by the local anneal; legs within it plus a table diagonal and
+		 *  two parent gates are on the board (dormant) as partners of new tables. */
+		double visit_radius = 0.15;
+		/** Explicit contacts a leg keeps (the sampler may still move them between legs);
+		 *  older ones are folded into its evidence. */
+		uint32_t contacts_per_leg = 6;
+		/** Unexplained contacts kept within one leg width of each other; older ones are
+		 *  forgotten (they never found a cause). */
+		uint32_t unexplained_per_spot = 4;
+	};
+
+	/** What one insertion did. */
+	struct TStats
+	{
+		uint32_t visited = 0, boardHypotheses = 0, boardContacts = 0;
+		std::array<uint32_t, inference::MOVE_COUNT> proposed{}, accepted{};
+		bool changed = false;  ///< the state was written (the sweep had contacts)
+		double initialLogPosterior = 0, logPosterior = 0;  ///< local problem: associated, annealed
+	};
+
+	LastingMap() = default;
+	LastingMap(const LastingMap& o) : m_state(o.m_state), m_options(o.m_options) {}
+	LastingMap& operator=(const LastingMap& o)
+	{
+		m_state = o.m_state, m_options = o.m_options;
+		return *this;
+	}
+
+	void setOptions(const TOptions& o) { m_options = o; }
+	const TOptions& options() const { return m_options; }
+
+	/** Inserts the contacts of one sweep (world frame), scored with `model`, annealed with
+	 *  `sampler`'s schedule from `seed`. */
+	TStats insert(
+		const std::vector<obs::Shapelet>& contacts, const model::ModelParams& model,
+		const inference::SamplerParams& sampler, uint64_t seed);
+
+	const model::LastingState& state() const { return m_state; }
+	model::LastingState& state() { return m_state; }
+	void clear() { m_state.clear(); }
+
+   private:
+	model::LastingState m_state;
+	TOptions m_options;
+	// Reused across insertions (not copied: a copy rebuilds them).
+	std::unique_ptr<inference::BlackboardSampler> m_sampler;
+	model::ModelParams m_samplerModel;
+	std::unique_ptr<model::LastingState::Region> m_region;
+	inference::TableExistence m_existence;
+	std::vector<model::Id> m_new, m_newTables, m_newLegs;
+};
+}  // namespace whiskermap::maps

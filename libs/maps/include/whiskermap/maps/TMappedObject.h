@@ -1,0 +1,16 @@
+#pragma once
+#include <whiskermap/world/Table.h>
+
+#include <cstdint>
+
+namespace whiskermap::maps
+{
+/** One object of a map as written to map_tables.csv / map_candidates.csv (doc/outputs.md). */
+struct TMappedObject
+{
+	world::Table table;  ///< pose and (known) size
+	double existence = 0;  ///< posterior existence probability (lasting map), or the vote (per-pose mode)
+	uint64_t contacts = 0;  ///< contacts its legs explain (per-pose mode: contacts seen on its legs)
+	uint32_t legs = 0;  ///< distinct legs with at least one contact
+};
+}  // namespace whiskermap::maps

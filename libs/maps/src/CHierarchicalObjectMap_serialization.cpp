@@ -1,0 +1,212 @@
+// CHierarchicalObjectMap: versioned MRPT serialization (doc/map-plugin.md). Version 0 (no
+// lasting map) still loads, as a per-pose map.
+#include <mrpt/serialization/CArchive.h>
+#include <whiskermap/maps/CHierarchicalObjectMap.h>
+
+using mrpt::serialization::CArchive;
+
+namespace whiskermap::maps
+{
+namespace
+{
+void write(CArchive& a, const world::Table& t) { a << t.x << t.y << t.yaw << t.length << t.width << t.leg_width << t.texture; }
+void read(CArchive& a, world::Table& t) { a >> t.x >> t.y >> t.yaw >> t.length >> t.width >> t.leg_width >> t.texture; }
+void write(CArchive& a, const obs::Shapelet& s) { a << s.x << s.y << s.normal << s.texture << static_cast<int32_t>(s.whisker); }
+void read(CArchive& a, obs::Shapelet& s)
+{
+	int32_t w;
+	a >> s.x >> s.y >> s.normal >> s.texture >> w;
+	s.whisker = w;
+}
+template <class T>
+void writeVec(CArchive& a, const std::vector<T>& v)
+{
+	a.WriteAs<uint32_t>(v.size());
+	for (const auto& x : v) write(a, x);
+}
+template <class T>
+void readVec(CArchive& a, std::vector<T>& v)
+{
+	v.resize(a.ReadAs<uint32_t>());
+	for (auto& x : v) read(a, x);
+}
+
+/** The lasting state, ids renumbered densely in ascending order. */
+void writeLasting(CArchive& out, const model::LastingState& s)
+{
+	std::vector<model::Id> tableIndex(static_cast<size_t>(s.tableIdBound()), model::NONE);
+	std::vector<model::Id> legIndex(static_cast<size_t>(s.legIdBound()), model::NONE);
+	out.WriteAs<uint32_t>(s.tableCount());
+	model::Id n = 0;
+	for (model::Id t = 0; t < s.tableIdBound(); t++)
+	{
+		if (!s.hasTable(t)) continue;
+		const auto& tb = s.table(t);
+		out << tb.x << tb.y << tb.theta << tb.leg_width << tb.texture << s.existence(t);
+		tableIndex[static_cast<size_t>(t)] = n++;
+	}
+	out.WriteAs<uint32_t>(s.legCount());
+	n = 0;
+	for (model::Id l = 0; l < s.legIdBound(); l++)
+	{
+		if (!s.hasLeg(l)) continue;
+		const auto& g = s.leg(l);
+		const int32_t parent = g.parent == model::NONE ? -1 : tableIndex[static_cast<size_t>(g.parent)];
+		out << g.x << g.y << g.theta << g.wx << g.wy << g.texture << parent;
+		for (const double v : s.evidence(l).stats()) out << v;
+		out << s.evidence(l).count();
+		legIndex[static_cast<size_t>(l)] = n++;
+	}
+	out.WriteAs<uint32_t>(s.contactCount());
+	for (model::Id c = 0; c < s.contactIdBound(); c++)
+	{
+		if (!s.hasContact(c)) continue;
+		const auto& k = s.contact(c);
+		write(out, k.shapelet);
+		out << static_cast<int32_t>(k.leg == model::NONE ? -1 : legIndex[static_cast<size_t>(k.leg)]) << k.seq;
+	}
+	out << s.nextSeq();
+}
+
+void readLasting(CArchive& in, model::LastingState& s)
+{
+	std::vector<model::Table> tables(in.ReadAs<uint32_t>());
+	std::vector<double> existence(tables.size());
+	for (size_t i = 0; i < tables.size(); i++)
+	{
+		auto& t = tables[i];
+		in >> t.x >> t.y >> t.theta >> t.leg_width >> t.texture >> existence[i];
+	}
+	std::vector<model::Leg> legs(in.ReadAs<uint32_t>());
+	std::vector<model::LegEvidence> evidence(legs.size());
+	for (size_t i = 0; i < legs.size(); i++)
+	{
+		auto& g = legs[i];
+		int32_t parent;
+		in >> g.x >> g.y >> g.theta >> g.wx >> g.wy >> g.texture >> parent;
+		if (parent < -1 || parent >= static_cast<int32_t>(tables.size()))
+			THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (leg parent out of range)");
+		g.parent = parent;
+		std::array<double, model::LegEvidence::STATS> stats;
+		for (double& v : stats) in >> v;
+		uint32_t count;
+		in >> count;
+		evidence[i] = model::LegEvidence::fromStats(stats, count);
+	}
+	std::vector<model::LastingState::Contact> contacts(in.ReadAs<uint32_t>());
+	for (auto& k : contacts)
+	{
+		read(in, k.shapelet);
+		int32_t leg;
+		in >> leg >> k.seq;
+		if (leg < -1 || leg >= static_cast<int32_t>(legs.size()))
+			THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (contact leg out of range)");
+		k.leg = leg;
+	}
+	uint64_t seq;
+	in >> seq;
+	s.restore(tables, existence, legs, evidence, contacts, seq);
+}
+}  // namespace
+
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 1; }
+
+void CHierarchicalObjectMap::serializeTo(CArchive& out) const
+{
+	out << genericMapParams;
+	// Options that shape the content (the sampler's settings come from the config).
+	const auto& m = modelParams;
+	out << m.sigma_r << m.sigma_theta << m.sigma_w << m.sigma_tau << m.c_T << m.c_L << m.c_S
+		<< m.alpha_L << m.alpha_S << m.epsilon << m.delta << m.table_length << m.table_width
+		<< m.leg_width << m.texture << m.parent_gate;
+	const auto& c = insertionOptions.consolidation;
+	out.WriteAs<uint32_t>(insertionOptions.memory_size);
+	out << insertionOptions.seed << insertionOptions.use_sensor_noise << insertionOptions.keep_history
+		<< c.merge_distance << c.merge_angle << c.evidence_margin;
+	out << likelihoodOptions.sweep.sigma_contact << likelihoodOptions.sweep.sigma_normal
+		<< likelihoodOptions.sweep.p_unexplained << likelihoodOptions.sweep.p_miss << likelihoodOptions.min_support
+		<< renderOptions.table_height << renderOptions.top_thickness << renderOptions.octomap_resolution;
+	// Content.
+	out << m_steps;
+	out.WriteAs<uint32_t>(m_poses.size());
+	for (const auto& p : m_poses)
+	{
+		out << p.pose << p.logPosterior << p.shapelets;
+		writeVec(out, p.tables);
+	}
+	out.WriteAs<uint32_t>(objects().size());
+	for (const auto& o : objects())
+	{
+		write(out, o.table);
+		out << o.support << o.evidence << o.sum_x << o.sum_y << o.sum_cos2 << o.sum_sin2;
+	}
+	writeVec(out, m_shapelets);
+	writeVec(out, m_memory.shapelets());
+	for (size_t k = 0; k < inference::MOVE_COUNT; k++) out << m_proposed[k] << m_accepted[k];
+	// Version 1: the lasting mode.
+	const auto& l = insertionOptions.lasting;
+	out.WriteAs<uint8_t>(static_cast<uint8_t>(insertionOptions.mode));
+	out << l.visit_radius << l.contacts_per_leg << l.unexplained_per_spot << likelihoodOptions.min_existence;
+	for (const auto& o : objects()) out << o.contacts << o.legMask;
+	writeLasting(out, m_lasting.state());
+}
+
+void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
+{
+	switch (version)
+	{
+		case 0:
+		case 1:
+		{
+			internal_clear();
+			in >> genericMapParams;
+			auto& m = modelParams;
+			in >> m.sigma_r >> m.sigma_theta >> m.sigma_w >> m.sigma_tau >> m.c_T >> m.c_L >> m.c_S >>
+				m.alpha_L >> m.alpha_S >> m.epsilon >> m.delta >> m.table_length >> m.table_width >>
+				m.leg_width >> m.texture >> m.parent_gate;
+			auto& c = insertionOptions.consolidation;
+			insertionOptions.memory_size = in.ReadAs<uint32_t>();
+			in >> insertionOptions.seed >> insertionOptions.use_sensor_noise >> insertionOptions.keep_history >>
+				c.merge_distance >> c.merge_angle >> c.evidence_margin;
+			in >> likelihoodOptions.sweep.sigma_contact >> likelihoodOptions.sweep.sigma_normal >>
+				likelihoodOptions.sweep.p_unexplained >> likelihoodOptions.sweep.p_miss >> likelihoodOptions.min_support >>
+				renderOptions.table_height >> renderOptions.top_thickness >> renderOptions.octomap_resolution;
+			in >> m_steps;
+			m_poses.resize(in.ReadAs<uint32_t>());
+			for (auto& p : m_poses)
+			{
+				in >> p.pose >> p.logPosterior >> p.shapelets;
+				readVec(in, p.tables);
+			}
+			std::vector<TMapObject> objs(in.ReadAs<uint32_t>());
+			for (auto& o : objs)
+			{
+				read(in, o.table);
+				in >> o.support >> o.evidence >> o.sum_x >> o.sum_y >> o.sum_cos2 >> o.sum_sin2;
+			}
+			readVec(in, m_shapelets);
+			std::vector<obs::Shapelet> memory;
+			readVec(in, memory);
+			m_memory = inference::ShapeletMemory(insertionOptions.memory_size);
+			m_memory.add(memory);
+			for (size_t k = 0; k < inference::MOVE_COUNT; k++) in >> m_proposed[k] >> m_accepted[k];
+			insertionOptions.mode = TInsertionOptions::TMode::PerPose;  // version 0 knew no other
+			if (version >= 1)
+			{
+				const uint8_t mode = in.ReadAs<uint8_t>();
+				if (mode > 1) THROW_EXCEPTION("CHierarchicalObjectMap: unknown mode in stream");
+				insertionOptions.mode = static_cast<TInsertionOptions::TMode>(mode);
+				auto& l = insertionOptions.lasting;
+				in >> l.visit_radius >> l.contacts_per_leg >> l.unexplained_per_spot >> likelihoodOptions.min_existence;
+				for (auto& o : objs) in >> o.contacts >> o.legMask;
+				readLasting(in, m_lasting.state());
+			}
+			m_consolidator.setObjects(std::move(objs));
+			m_consolidator.setOptions(c);
+		}
+		break;
+		default:
+			MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+	}
+}
+}  // namespace whiskermap::maps

@@ -1,0 +1,124 @@
+#pragma once
+#include <whiskermap/model/Blackboard.h>
+#include <whiskermap/model/LegEvidence.h>
+#include <whiskermap/model/SlotVector.h>
+#include <whiskermap/model/SpatialGrid.h>
+#include <whiskermap/obs/Shapelet.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace whiskermap::model
+{
+/** The lasting map's hierarchical state (doc/map-plugin.md, "The lasting map"): every table
+ *  and leg it believes, each leg with the evidence of all the contacts it ever explained
+ *  (the recent ones as explicit contacts, older ones folded into LegEvidence), and the recent
+ *  contacts nothing explains. Memory grows with the objects, not with the contacts: a leg
+ *  keeps a bounded number of explicit contacts, and unexplained contacts are bounded per
+ *  small cell of space.
+ *
+ *  Inference edits it locally: extract() cuts the problem around new contacts out as a
+ *  Blackboard (hypotheses near them visited, those further out dormant, fixed context
+ *  around), the sampler anneals that board, and replace() writes the result back. Nothing far
+ *  from the new contacts is read or written: an insertion costs the local density of the
+ *  map, never its size. */
+class LastingState
+{
+   public:
+	/** A contact kept explicitly: data of the next local problems around it. */
+	struct Contact
+	{
+		obs::Shapelet shapelet;
+		Id leg = NONE;  ///< explaining leg, or NONE
+		uint64_t seq = 0;  ///< insertion order (older contacts fold first)
+	};
+	/** Radii (metres) of a local problem around new contacts. */
+	struct Radii
+	{
+		double visit = 0;  ///< legs (and tables with a corner) this close are visited
+		double board = 0;  ///< legs this close are on the board (partners, adoptees), dormant
+		double context = 0;  ///< tables and legs this close stand around as fixed context
+	};
+	/** A local problem: the board and, per board id, the store id it came from (NONE: new). */
+	struct Region
+	{
+		explicit Region(const ModelParams& p) : board(p) {}
+		Blackboard board;
+		std::vector<Id> tables, legs, contacts;  ///< store ids of the board's tables, legs, shapelets
+	};
+
+	explicit LastingState(const ModelParams& sizes = {});
+
+	/** Adds a contact nothing explains yet; returns its id. */
+	Id addContact(const obs::Shapelet& s);
+
+	/** Fills `out` with the local problem around the contacts `around` (store ids), scored
+	 *  with `model`. Board ids ascend with store ids, so runs are reproducible. */
+	void extract(const std::vector<Id>& around, const Radii& radii, const ModelParams& model, Region& out);
+
+	/** Replaces the region's tables and legs by the live hypotheses of `solved` (a board
+	 *  grown from r.board: its first r.tables.size() table ids and r.legs.size() leg ids are
+	 *  the region's, later ids new), relinks the region's contacts, and stores
+	 *  `existence[t]` for each live table t of `solved`. Returns the store ids of the new
+	 *  legs and tables in `newLegs` / `newTables` (board id -> store id, NONE if dead). */
+	void replace(
+		const Region& r, const Blackboard& solved, const std::vector<double>& existence, std::vector<Id>& newTables,
+		std::vector<Id>& newLegs);
+
+	/** Folds the oldest explicit contacts of leg `l` into its evidence (scored with `model`)
+	 *  until at most `keep` remain. */
+	void fold(Id l, size_t keep, const ModelParams& model);
+	/** Forgets the oldest unexplained contacts in the cell of contact `c` (cells of
+	 *  `cellSize`) beyond `keep`; returns how many were forgotten. */
+	size_t forgetUnexplained(Id c, size_t keep, double cellSize);
+
+	// Read access.
+	Id tableIdBound() const { return m_tables.capacity(); }
+	Id legIdBound() const { return m_legs.capacity(); }
+	Id contactIdBound() const { return m_contacts.capacity(); }
+	bool hasTable(Id t) const { return m_tables.alive(t); }
+	bool hasLeg(Id l) const { return m_legs.alive(l); }
+	bool hasContact(Id c) const { return m_contacts.alive(c); }
+	const Table& table(Id t) const { return m_tables[t]; }
+	double existence(Id t) const { return m_existence[t]; }
+	const Leg& leg(Id l) const { return m_legs[l]; }
+	const LegEvidence& evidence(Id l) const { return m_evidence[l]; }
+	const Contact& contact(Id c) const { return m_contacts[c]; }
+	const std::vector<Id>& legsOf(Id t) const { return m_tableLegs[t]; }
+	const std::vector<Id>& contactsOf(Id l) const { return m_legContacts[l]; }
+	size_t tableCount() const { return m_tables.count(); }
+	size_t legCount() const { return m_legs.count(); }
+	size_t contactCount() const { return m_contacts.count(); }
+	/** Contacts explained by leg l: explicit plus folded. */
+	uint64_t contactsExplained(Id l) const { return m_legContacts[l].size() + m_evidence[l].count(); }
+	uint64_t nextSeq() const { return m_seq; }
+
+	/** Rebuilds a state from its parts (deserialization): tables with their existence, legs
+	 *  (parent = index into `tables`) with evidence, contacts (leg = index into `legs`). */
+	void restore(
+		const std::vector<Table>& tables, const std::vector<double>& existence, const std::vector<Leg>& legs,
+		const std::vector<LegEvidence>& evidence, const std::vector<Contact>& contacts, uint64_t seq);
+	void clear();
+
+   private:
+	Id addTable(const Table& t, double existence);
+	Id addLeg(const Leg& l, const LegEvidence& e);  ///< links to l.parent (a store id)
+	void removeTable(Id t);  ///< after its legs are gone or relinked
+	void removeLeg(Id l);  ///< its contacts become unexplained
+	void setContactLeg(Id c, Id l);
+	/** Epoch marks: a fresh set per extraction, cleared in O(1). */
+	bool mark(std::vector<uint32_t>& marks, Id id);
+
+	ModelParams m_sizes;  ///< table and leg sizes: search radii, cell sizes
+	SlotVector<Table> m_tables;
+	SlotVector<Leg> m_legs;
+	SlotVector<Contact> m_contacts;
+	std::vector<double> m_existence;
+	std::vector<LegEvidence> m_evidence;
+	std::vector<std::vector<Id>> m_tableLegs, m_legContacts;
+	SpatialGrid m_tableGrid, m_legGrid, m_contactGrid;  ///< contacts: the unexplained ones
+	uint64_t m_seq = 0;
+	uint32_t m_epoch = 0;
+	std::vector<uint32_t> m_tableMark, m_legMark, m_contactMark;
+};
+}  // namespace whiskermap::model

@@ -1,0 +1,55 @@
+#pragma once
+#include <whiskermap/model/Id.h>
+
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace whiskermap::model
+{
+/** Points (ids) on a uniform grid of square cells kept in a hash map that grows with the
+ *  number of occupied cells: for maps of any size (the lasting map's store), where
+ *  SpatialHash's fixed buckets suit small, often reset blackboards. Cell indices are 64-bit,
+ *  so any finite coordinate below 1e15 cell sizes is safe. */
+class SpatialGrid
+{
+   public:
+	explicit SpatialGrid(double cellSize);
+
+	void clear() { m_cells.clear(); }
+	void insert(Id id, double x, double y);
+	void erase(Id id, double x, double y);
+
+	/** Calls f(id) for every id in a cell touching the square of half-side `radius` around
+	 *  (x, y): a superset of the points within `radius`, each id once. */
+	template <class F>
+	void forEachNear(double x, double y, double radius, F&& f) const
+	{
+		const int64_t x0 = cell(x - radius), x1 = cell(x + radius), y0 = cell(y - radius), y1 = cell(y + radius);
+		for (int64_t ix = x0; ix <= x1; ix++)
+			for (int64_t iy = y0; iy <= y1; iy++)
+				if (const auto it = m_cells.find(Key{ix, iy}); it != m_cells.end())
+					for (const Id id : it->second) f(id);
+	}
+
+   private:
+	struct Key
+	{
+		int64_t ix, iy;
+		bool operator==(const Key& o) const { return ix == o.ix && iy == o.iy; }
+	};
+	struct KeyHash
+	{
+		size_t operator()(const Key& k) const
+		{
+			return static_cast<size_t>(static_cast<uint64_t>(k.ix) * 0x9E3779B97F4A7C15ull ^
+									   static_cast<uint64_t>(k.iy) * 0xC2B2AE3D27D4EB4Full);
+		}
+	};
+	int64_t cell(double v) const { return static_cast<int64_t>(std::floor(v / m_cellSize)); }
+
+	double m_cellSize;
+	std::unordered_map<Key, std::vector<Id>, KeyHash> m_cells;
+};
+}  // namespace whiskermap::model

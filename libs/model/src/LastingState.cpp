@@ -1,0 +1,294 @@
+#include <whiskermap/model/Densities.h>
+#include <whiskermap/model/LastingState.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace whiskermap::model
+{
+namespace
+{
+constexpr double GRID_CELL = 0.5;  ///< metres: legs and contacts
+
+double dist2(double ax, double ay, double bx, double by) { return (ax - bx) * (ax - bx) + (ay - by) * (ay - by); }
+
+template <class T>
+void growTo(std::vector<T>& v, Id bound, const T& value = T())
+{
+	if (v.size() < static_cast<size_t>(bound)) v.resize(static_cast<size_t>(bound), value);
+}
+}  // namespace
+
+LastingState::LastingState(const ModelParams& sizes)
+	: m_sizes(sizes),
+	  m_tableGrid(std::hypot(sizes.table_length, sizes.table_width)),
+	  m_legGrid(GRID_CELL),
+	  m_contactGrid(GRID_CELL)
+{
+}
+
+void LastingState::clear() { *this = LastingState(m_sizes); }
+
+bool LastingState::mark(std::vector<uint32_t>& marks, Id id)
+{
+	if (marks[static_cast<size_t>(id)] == m_epoch) return false;
+	marks[static_cast<size_t>(id)] = m_epoch;
+	return true;
+}
+
+Id LastingState::addContact(const obs::Shapelet& s)
+{
+	const Id c = m_contacts.add({s, NONE, m_seq++});
+	growTo(m_contactMark, m_contacts.capacity(), 0u);
+	m_contactGrid.insert(c, s.x, s.y);
+	return c;
+}
+
+Id LastingState::addTable(const Table& t, double existence)
+{
+	const Id id = m_tables.add(t);
+	growTo(m_existence, m_tables.capacity(), 0.0);
+	growTo(m_tableLegs, m_tables.capacity());
+	growTo(m_tableMark, m_tables.capacity(), 0u);
+	m_existence[id] = existence;
+	m_tableLegs[id].clear();
+	m_tableGrid.insert(id, t.x, t.y);
+	return id;
+}
+
+Id LastingState::addLeg(const Leg& l, const LegEvidence& e)
+{
+	const Id id = m_legs.add(l);
+	growTo(m_evidence, m_legs.capacity());
+	growTo(m_legContacts, m_legs.capacity());
+	growTo(m_legMark, m_legs.capacity(), 0u);
+	m_evidence[id] = e;
+	m_legContacts[id].clear();
+	m_legGrid.insert(id, l.x, l.y);
+	if (l.parent != NONE) m_tableLegs[l.parent].push_back(id);
+	return id;
+}
+
+void LastingState::removeTable(Id t)
+{
+	for (const Id l : m_tableLegs[t]) m_legs[l].parent = NONE, m_legs[l].corner = -1;
+	m_tableLegs[t].clear();
+	m_tableGrid.erase(t, m_tables[t].x, m_tables[t].y);
+	m_tables.remove(t);
+}
+
+void LastingState::removeLeg(Id l)
+{
+	const std::vector<Id> contacts = m_legContacts[l];
+	for (const Id c : contacts) setContactLeg(c, NONE);
+	const Id parent = m_legs[l].parent;
+	if (parent != NONE)
+	{
+		auto& v = m_tableLegs[parent];
+		v.erase(std::remove(v.begin(), v.end(), l), v.end());
+	}
+	m_evidence[l] = {};
+	m_legGrid.erase(l, m_legs[l].x, m_legs[l].y);
+	m_legs.remove(l);
+}
+
+void LastingState::setContactLeg(Id c, Id l)
+{
+	Contact& k = m_contacts[c];
+	if (k.leg == l) return;
+	if (k.leg == NONE)
+		m_contactGrid.erase(c, k.shapelet.x, k.shapelet.y);
+	else
+	{
+		auto& v = m_legContacts[k.leg];
+		v.erase(std::remove(v.begin(), v.end(), c), v.end());
+	}
+	k.leg = l;
+	if (l == NONE)
+		m_contactGrid.insert(c, k.shapelet.x, k.shapelet.y);
+	else
+		m_legContacts[l].push_back(c);
+}
+
+void LastingState::extract(const std::vector<Id>& around, const Radii& radii, const ModelParams& model, Region& out)
+{
+	if (!(out.board.params() == model)) out.board = Blackboard(model);
+	++m_epoch;
+	out.tables.clear(), out.legs.clear(), out.contacts.clear();
+	std::vector<Id> visitLegs, visitTables, contextTables, contextLegs;
+	const double halfDiagonal = std::hypot(m_sizes.table_length, m_sizes.table_width) / 2;
+	for (const Id a : around)
+	{
+		const double x = m_contacts[a].shapelet.x, y = m_contacts[a].shapelet.y;
+		m_legGrid.forEachNear(x, y, radii.board, [&](Id l) {
+			const Leg& leg = m_legs[l];
+			const double d2 = dist2(leg.x, leg.y, x, y);
+			if (d2 > radii.board * radii.board) return;
+			if (mark(m_legMark, l)) out.legs.push_back(l);
+			if (d2 <= radii.visit * radii.visit) visitLegs.push_back(l);
+		});
+		// Tables with a corner near the contact: it may be one of their (invented) legs.
+		m_tableGrid.forEachNear(x, y, radii.visit + halfDiagonal, [&](Id t) {
+			for (int c = 0; c < 4; c++)
+			{
+				double cx = 0, cy = 0;
+				tableCorner(m_tables[t], c, m_sizes, cx, cy);
+				if (dist2(cx, cy, x, y) <= radii.visit * radii.visit)
+				{
+					visitTables.push_back(t);
+					if (mark(m_tableMark, t)) out.tables.push_back(t);
+					return;
+				}
+			}
+		});
+		m_contactGrid.forEachNear(x, y, radii.board, [&](Id c) {
+			if (dist2(m_contacts[c].shapelet.x, m_contacts[c].shapelet.y, x, y) <= radii.board * radii.board &&
+				mark(m_contactMark, c))
+				out.contacts.push_back(c);
+		});
+	}
+	// Closure: the tables of the board's legs, then every leg of the board's tables.
+	for (size_t i = 0, n = out.legs.size(); i < n; i++)
+	{
+		const Id p = m_legs[out.legs[i]].parent;
+		if (p != NONE && mark(m_tableMark, p)) out.tables.push_back(p);
+	}
+	for (const Id l : visitLegs)
+		if (m_legs[l].parent != NONE) visitTables.push_back(m_legs[l].parent);
+	for (const Id t : out.tables)
+		for (const Id l : m_tableLegs[t])
+			if (mark(m_legMark, l)) out.legs.push_back(l);
+	for (const Id l : out.legs)
+		for (const Id c : m_legContacts[l])
+			if (mark(m_contactMark, c)) out.contacts.push_back(c);
+	// Fixed context: what could overlap the board's hypotheses.
+	for (const Id a : around)
+	{
+		const double x = m_contacts[a].shapelet.x, y = m_contacts[a].shapelet.y;
+		m_tableGrid.forEachNear(x, y, radii.context, [&](Id t) {
+			if (dist2(m_tables[t].x, m_tables[t].y, x, y) <= radii.context * radii.context && mark(m_tableMark, t))
+				contextTables.push_back(t);
+		});
+		m_legGrid.forEachNear(x, y, radii.context, [&](Id l) {
+			if (dist2(m_legs[l].x, m_legs[l].y, x, y) <= radii.context * radii.context && mark(m_legMark, l))
+				contextLegs.push_back(l);
+		});
+	}
+	std::sort(out.tables.begin(), out.tables.end());
+	std::sort(out.legs.begin(), out.legs.end());
+	std::sort(out.contacts.begin(), out.contacts.end());
+	std::sort(contextTables.begin(), contextTables.end());
+	std::sort(contextLegs.begin(), contextLegs.end());
+
+	// The board: store id -> board id through the (now unused) mark slots' positions.
+	std::vector<obs::Shapelet> shapelets;
+	shapelets.reserve(out.contacts.size());
+	for (const Id c : out.contacts) shapelets.push_back(m_contacts[c].shapelet);
+	Blackboard& bb = out.board;
+	bb.reset(shapelets);
+	auto boardIndex = [](const std::vector<Id>& ids, Id storeId) {
+		return static_cast<Id>(std::lower_bound(ids.begin(), ids.end(), storeId) - ids.begin());
+	};
+	for (const Id t : out.tables) bb.addTable(m_tables[t]);
+	for (const Id l : out.legs)
+	{
+		Leg leg = m_legs[l];
+		leg.parent = leg.parent == NONE ? NONE : boardIndex(out.tables, leg.parent);
+		bb.addLeg(leg, m_evidence[l]);
+	}
+	for (size_t i = 0; i < out.contacts.size(); i++)
+	{
+		const Id l = m_contacts[out.contacts[i]].leg;
+		if (l != NONE) bb.setShapeletParent(i, boardIndex(out.legs, l));
+	}
+	// Dormant: everything but the visited legs and tables.
+	std::sort(visitLegs.begin(), visitLegs.end());
+	std::sort(visitTables.begin(), visitTables.end());
+	for (size_t i = 0; i < out.tables.size(); i++)
+		bb.setTableDormant(static_cast<Id>(i), !std::binary_search(visitTables.begin(), visitTables.end(), out.tables[i]));
+	for (size_t i = 0; i < out.legs.size(); i++)
+		bb.setLegDormant(static_cast<Id>(i), !std::binary_search(visitLegs.begin(), visitLegs.end(), out.legs[i]));
+	for (const Id t : contextTables) bb.addContextTable(m_tables[t]);
+	for (const Id l : contextLegs) bb.addContextLeg(m_legs[l]);
+}
+
+void LastingState::replace(
+	const Region& r, const Blackboard& solved, const std::vector<double>& existence, std::vector<Id>& newTables,
+	std::vector<Id>& newLegs)
+{
+	for (const Id l : r.legs) removeLeg(l);
+	for (const Id t : r.tables) removeTable(t);
+	newTables.assign(static_cast<size_t>(solved.tableIdBound()), NONE);
+	newLegs.assign(static_cast<size_t>(solved.legIdBound()), NONE);
+	for (Id t = 0; t < solved.tableIdBound(); t++)
+		if (solved.hasTable(t)) newTables[t] = addTable(solved.table(t), existence[t]);
+	for (Id l = 0; l < solved.legIdBound(); l++)
+	{
+		if (!solved.hasLeg(l)) continue;
+		Leg leg = solved.leg(l);
+		if (leg.parent != NONE) leg.parent = newTables[leg.parent];
+		newLegs[l] = addLeg(leg, solved.evidence(l));
+	}
+	for (size_t i = 0; i < r.contacts.size(); i++)
+	{
+		const Id l = solved.shapeletParent(i);
+		setContactLeg(r.contacts[i], l == NONE ? NONE : newLegs[l]);
+	}
+}
+
+void LastingState::fold(Id l, size_t keep, const ModelParams& model)
+{
+	auto& contacts = m_legContacts[l];
+	while (contacts.size() > keep)
+	{
+		const auto oldest = std::min_element(contacts.begin(), contacts.end(), [&](Id a, Id b) {
+			return m_contacts[a].seq < m_contacts[b].seq;
+		});
+		const Id c = *oldest;
+		m_evidence[l].add(m_contacts[c].shapelet, m_legs[l], model);
+		contacts.erase(oldest);
+		m_contacts.remove(c);
+	}
+}
+
+size_t LastingState::forgetUnexplained(Id c, size_t keep, double radius)
+{
+	const obs::Shapelet s = m_contacts[c].shapelet;
+	std::vector<Id> near;
+	m_contactGrid.forEachNear(s.x, s.y, radius, [&](Id o) {
+		if (dist2(m_contacts[o].shapelet.x, m_contacts[o].shapelet.y, s.x, s.y) <= radius * radius) near.push_back(o);
+	});
+	if (near.size() <= keep) return 0;
+	std::sort(near.begin(), near.end(), [&](Id a, Id b) { return m_contacts[a].seq < m_contacts[b].seq; });
+	const size_t forget = near.size() - keep;
+	for (size_t i = 0; i < forget; i++)
+	{
+		m_contactGrid.erase(near[i], m_contacts[near[i]].shapelet.x, m_contacts[near[i]].shapelet.y);
+		m_contacts.remove(near[i]);
+	}
+	return forget;
+}
+
+void LastingState::restore(
+	const std::vector<Table>& tables, const std::vector<double>& existence, const std::vector<Leg>& legs,
+	const std::vector<LegEvidence>& evidence, const std::vector<Contact>& contacts, uint64_t seq)
+{
+	clear();
+	std::vector<Id> tableIds, legIds;
+	for (size_t i = 0; i < tables.size(); i++) tableIds.push_back(addTable(tables[i], existence[i]));
+	for (size_t i = 0; i < legs.size(); i++)
+	{
+		Leg l = legs[i];
+		if (l.parent != NONE) l.parent = tableIds.at(static_cast<size_t>(l.parent));
+		legIds.push_back(addLeg(l, evidence[i]));
+	}
+	for (const Contact& k : contacts)
+	{
+		const Id c = m_contacts.add({k.shapelet, NONE, k.seq});
+		growTo(m_contactMark, m_contacts.capacity(), 0u);
+		m_contactGrid.insert(c, k.shapelet.x, k.shapelet.y);
+		if (k.leg != NONE) setContactLeg(c, legIds.at(static_cast<size_t>(k.leg)));
+	}
+	m_seq = seq;
+}
+}  // namespace whiskermap::model
