@@ -236,3 +236,31 @@ TEST(Posterior, AnnealedAcceptance)
 	EXPECT_EQ(annealedAcceptance(-1e6, 1), 0);
 	EXPECT_EQ(annealedAcceptance(1e6, 1), 1);
 }
+
+// Moving a table and its legs changes logJoint exactly by the change of logJointAround (what
+// the sampler's table refit is judged on), lasting-map boards included.
+TEST(Posterior, LogJointAroundTracksTableMoves)
+{
+	RandomBoards gen;
+	int moved = 0;
+	for (int trial = 0; trial < 200; trial++)
+	{
+		Blackboard bb = gen.make(trial % 2 == 1);
+		for (Id t = 0; t < bb.tableIdBound(); t++)
+		{
+			const double joint = logJoint(bb), around = logJointAround(bb, t);
+			Table m = bb.table(t);
+			m.x += gen.u(-0.05, 0.05), m.theta += gen.u(-0.2, 0.2);
+			bb.setTable(t, m);
+			for (const Id l : bb.legsOf(t))
+			{
+				Leg g = bb.leg(l);
+				g.x += gen.u(-0.03, 0.03), g.y += gen.u(-0.03, 0.03);
+				bb.setLeg(l, g);
+			}
+			EXPECT_NEAR(logJoint(bb) - joint, logJointAround(bb, t) - around, 1e-8) << "trial " << trial;
+			moved += !bb.legsOf(t).empty();
+		}
+	}
+	EXPECT_GT(moved, 150);
+}

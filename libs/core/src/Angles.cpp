@@ -6,7 +6,9 @@ namespace whiskermap::core
 {
 double angleDiff(double a, double b, double period)
 {
-	double d = std::fmod(a - b, period);
+	double d = a - b;
+	if (d > -period / 2 && d <= period / 2) return d;  // already in range: what fmod would give
+	d = std::fmod(d, period);
 	if (d <= -period / 2) d += period;
 	if (d > period / 2) d -= period;
 	return d;

@@ -523,7 +523,7 @@ void BlackboardSampler::proposeTableRefit(Id t, double beta)
 	m_savedLegs.clear();
 	for (const Id l : m_bb.legsOf(t)) m_savedLegs.emplace_back(l, m_bb.leg(l));
 	const Table old = m_bb.table(t);
-	const double before = model::logJoint(m_bb);
+	const double before = model::logJointAround(m_bb, t);
 	bool valid = true;
 	for (int round = 0; round < 2 && valid; round++)
 	{
@@ -550,7 +550,7 @@ void BlackboardSampler::proposeTableRefit(Id t, double beta)
 		moved.theta = now.theta;
 		m_bb.setLeg(l, moved);
 	}
-	if (valid && accept(Move::Refit, model::logJoint(m_bb) - before, beta)) return;
+	if (valid && accept(Move::Refit, model::logJointAround(m_bb, t) - before, beta)) return;
 	m_bb.setTable(t, old);
 	for (const auto& [l, saved] : m_savedLegs) m_bb.setLeg(l, saved);
 }

@@ -34,26 +34,23 @@ std::vector<double> TableExistence::of(const model::Blackboard& bb)
 	for (Id t = 0; t < bb.tableIdBound(); t++)
 	{
 		if (!bb.hasTable(t)) continue;
-		model::Blackboard without = bb;
-		const double sT = -removeTableAndOrphans(without, t, m_orphans);
-		// Rivals: pair tables through the legs of t that explain contacts.
-		m_rivals.clear();
-		std::vector<Id> supported;
-		for (const Id l : bb.legsOf(t))
-			if (bb.explains(l)) supported.push_back(l);
+		m_without = bb;  // reuses the scratch board's storage
+		const double sT = -removeTableAndOrphans(m_without, t, m_orphans);
+		// Rivals: pair tables through the legs of t that explain contacts, each scored on the
+		// board without t and then taken off it again.
 		double rivals = 0;  // sum of exp(s_R - s_T)
 		m_scored.assign(1, bb.table(t));
-		for (const Id l : supported)
+		for (const Id l : bb.legsOf(t))
 		{
+			if (!bb.explains(l)) continue;
 			m_rivals.clear();
-			tablesForPairs(without, l, m_rivals);
+			tablesForPairs(m_without, l, m_rivals);
 			for (const Table& r : m_rivals)
 			{
 				// The rival as it settles on the legs it adopts; counted once, and never when it
 				// settles on t itself.
-				model::Blackboard trial = without;
 				Table settled = r;
-				const double sR = scoreRival(trial, settled, l);
+				const double sR = scoreRival(m_without, settled, l);
 				if (std::any_of(m_scored.begin(), m_scored.end(), [&](const Table& s) { return same(s, settled, p); }))
 					continue;
 				m_scored.push_back(settled);
@@ -86,12 +83,12 @@ double TableExistence::scoreRival(model::Blackboard& bb, Table& t, Id leg)
 		}
 		t = fitTable(p, t, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
 	}
-	if (bb.leg(leg).parent != NONE) return -1e300;  // the pair leg belongs to another table
 	const Id id = bb.addTable(t);
 	for (const Id a : m_adopted) bb.setLegParent(a, id);
 	double s = model::logOddsTable(bb, id);
 	// Invented legs at the empty corners, where they pay (eq. 20 of each).
 	const model::CornerCounts counts = bb.cornerCounts(id);
+	m_invented.clear();
 	for (int c = 0; c < 4; c++)
 	{
 		if (counts[c] > 0) continue;
@@ -104,10 +101,13 @@ double TableExistence::scoreRival(model::Blackboard& bb, Table& t, Id leg)
 		const Id li = bb.addLeg(l);
 		const double gain = model::logOddsLeg(bb, li);
 		if (gain > 0)
-			s += gain;
+			s += gain, m_invented.push_back(li);
 		else
 			bb.removeLeg(li);
 	}
+	// Off the board again, last in first out (the adopted legs fall back to no parent).
+	for (auto it = m_invented.rbegin(); it != m_invented.rend(); ++it) bb.removeLeg(*it);
+	bb.removeTable(id);
 	return s;
 }
 }  // namespace whiskermap::inference

@@ -46,8 +46,11 @@ void tablesForPairs(const model::Blackboard& bb, Id l, std::vector<Table>& out)
 	Table frame = tableWithLegAt(p, bb.leg(l), 0, 0);
 	frame.x = frame.y = frame.theta = 0;
 	double cx[4], cy[4];
-	for (int c = 0; c < 4; c++) model::tableCorner(frame, c, p, cx[c], cy[c]);
+	model::tableCorners(frame, p, cx, cy);
 	bb.forEachLegNear(bb.leg(l).x, bb.leg(l).y, diagonal + 2 * gate, [&](Id o) {
+		// A partner whose texture is more than 5 sigma from the table's costs it over 25 nats
+		// (eq. 6): not worth proposing.
+		if (std::abs(bb.leg(o).texture - p.texture) > 5 * p.sigma_tau) return;
 		const model::Leg* pair[2] = {&bb.leg(l), &bb.leg(o)};
 		const double d = std::hypot(pair[1]->x - pair[0]->x, pair[1]->y - pair[0]->y);
 		// l at corner 0 or 1, o at another: with the 180 deg symmetry these are all the tables
@@ -65,20 +68,18 @@ void tablesForPairs(const model::Blackboard& bb, Id l, std::vector<Table>& out)
 size_t adoptable(const model::Blackboard& bb, const Table& t, Id l, std::vector<Id>& out)
 {
 	const model::ModelParams& p = bb.params();
+	double cx[4], cy[4], d2 = 0;
+	model::tableCorners(t, p, cx, cy);
 	bool taken[4] = {false, false, false, false};
-	taken[model::logLegGivenTable(bb.leg(l), t, p).corner] = true;
+	taken[model::nearestCorner(cx, cy, bb.leg(l).x, bb.leg(l).y, d2)] = true;
 	out.clear();
-	const double reach = std::hypot(p.table_length, p.table_width) / 2 + p.parent_gate;
-	bb.forEachLegNear(t.x, t.y, reach, [&](Id o) {
-		if (o == l) return;
-		const Leg& leg = bb.leg(o);
-		const int c = model::logLegGivenTable(leg, t, p).corner;
-		double cx = 0, cy = 0;
-		model::tableCorner(t, c, p, cx, cy);
-		if (taken[c] || std::hypot(cx - leg.x, cy - leg.y) > p.parent_gate) return;
-		taken[c] = true;
-		out.push_back(o);
-	});
+	// Legs within the gate of each empty corner (corners are far more than two gates apart).
+	for (int c = 0; c < 4; c++)
+		bb.forEachLegNear(cx[c], cy[c], p.parent_gate, [&](Id o) {
+			if (o == l || taken[c]) return;
+			taken[c] = true;
+			out.push_back(o);
+		});
 	return out.size();
 }
 }  // namespace whiskermap::inference

@@ -34,6 +34,30 @@ void tableCorner(const Table& t, int i, const ModelParams& p, double& x, double&
 	y = t.y + s * lx + c * ly;
 }
 
+void tableCorners(const Table& t, const ModelParams& p, double x[4], double y[4])
+{
+	const double c = std::cos(t.theta), s = std::sin(t.theta);
+	for (int i = 0; i < 4; i++)
+	{
+		const double lx = (i == 0 || i == 3 ? 0.5 : -0.5) * p.table_length;
+		const double ly = (i < 2 ? 0.5 : -0.5) * p.table_width;
+		x[i] = t.x + c * lx - s * ly;
+		y[i] = t.y + s * lx + c * ly;
+	}
+}
+
+int nearestCorner(const double x[4], const double y[4], double px, double py, double& d2)
+{
+	int best = 0;
+	d2 = std::numeric_limits<double>::infinity();
+	for (int i = 0; i < 4; i++)
+	{
+		const double d = sq(x[i] - px) + sq(y[i] - py);
+		if (d < d2) d2 = d, best = i;
+	}
+	return best;
+}
+
 OrientedRect tableRect(const Table& t, const ModelParams& p)
 {
 	return {t.x, t.y, t.theta, p.table_length / 2, p.table_width / 2};
@@ -45,18 +69,9 @@ LegFit logLegGivenTable(const Leg& l, const Table& t, const ModelParams& p)
 {
 	// eq. 6: nearest corner, then angle (modulo the leg's 90 degree symmetry), widths, texture
 	LegFit fit{0, 0};
-	double best = std::numeric_limits<double>::infinity();
-	for (int i = 0; i < 4; i++)
-	{
-		double cx = 0, cy = 0;
-		tableCorner(t, i, p, cx, cy);
-		const double d2 = sq(cx - l.x) + sq(cy - l.y);
-		if (d2 < best)
-		{
-			best = d2;
-			fit.corner = i;
-		}
-	}
+	double cx[4], cy[4], best = 0;
+	tableCorners(t, p, cx, cy);
+	fit.corner = nearestCorner(cx, cy, l.x, l.y, best);
 	const double delta = best / sq(p.sigma_r) +
 						 sq(core::angleDiff(t.theta, l.theta, M_PI_2) / p.sigma_theta) +
 						 sq((t.leg_width - l.wx) / p.sigma_w) + sq((t.leg_width - l.wy) / p.sigma_w) +
@@ -68,13 +83,20 @@ LegFit logLegGivenTable(const Leg& l, const Table& t, const ModelParams& p)
 double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelParams& p)
 {
 	// eq. 7 with the face that explains the contact best: distance to that face (a segment)
-	// and the contact's normal against the face's outward normal (mod 360 deg).
-	const OrientedRect r = legRect(l);
+	// and the contact's normal against the face's outward normal (mod 360 deg). Faces k = 0..3
+	// have outward normals theta + k pi/2; in the leg frame the point is (lx, ly).
+	const double c = std::cos(l.theta), sn = std::sin(l.theta);
+	const double dx = s.x - l.x, dy = s.y - l.y;
+	const double lx = c * dx + sn * dy, ly = -sn * dx + c * dy, hx = l.wx / 2, hy = l.wy / 2;
+	const double ex = std::max(std::abs(lx) - hx, 0.0), ey = std::max(std::abs(ly) - hy, 0.0);
+	const double faceDistance2[4] = {sq(lx - hx) + sq(ey), sq(ly - hy) + sq(ex), sq(lx + hx) + sq(ey), sq(ly + hy) + sq(ex)};
+	double a = core::wrapToPi(s.normal - l.theta);  // normal against face 0's
 	double best = std::numeric_limits<double>::infinity();
-	for (int k = 0; k < 4; k++)
-		best = std::min(
-			best, sq(r.faceDistance(s.x, s.y, k) / p.sigma_r) +
-					  sq(core::angleDiff(s.normal, l.theta + k * M_PI_2, 2 * M_PI) / p.sigma_theta));
+	for (int k = 0; k < 4; k++, a -= M_PI_2)
+	{
+		const double ak = a <= -M_PI ? a + 2 * M_PI : a;
+		best = std::min(best, faceDistance2[k] / sq(p.sigma_r) + sq(ak / p.sigma_theta));
+	}
 	return std::log(p.alpha_S) - best - sq((l.texture - s.texture) / p.sigma_tau);  // eq. 7
 }
 

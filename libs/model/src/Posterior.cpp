@@ -1,6 +1,7 @@
 #include <whiskermap/model/Densities.h>
 #include <whiskermap/model/Posterior.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -90,6 +91,30 @@ double logJoint(const Blackboard& bb)
 	for (size_t s = 0; s < bb.shapelets().size(); s++)
 		sum += logShapeletDensity(bb, s, bb.shapeletParent(s));
 	return sum + logOverlap(boardPairs / 2 + contextPairs, p);
+}
+
+double logJointAround(const Blackboard& bb, Id table)
+{
+	const ModelParams& p = bb.params();
+	const std::vector<Id>& legs = bb.legsOf(table);
+	const Overlaps to = overlappingTables(bb, table);
+	double sum = logCell(logTablePrior(p), p) + logTableConstraints(bb.cornerCounts(table), p);
+	int pairs = to.board + to.context;
+	for (const Id l : legs)
+	{
+		sum += logCell(logLegDensity(bb, bb.leg(l), table), p) + evidenceGain(bb, l);
+		for (const Id s : bb.shapeletsOf(l)) sum += logShapeletDensity(bb, static_cast<size_t>(s), l);
+		// Overlaps with legs outside the group, and inside it once per pair.
+		const OrientedRect r = legRect(bb.leg(l));
+		bb.forEachLegNear(r.cx, r.cy, std::hypot(r.hx, r.hy) + bb.maxLegRadius(), [&](Id o) {
+			const bool inside = std::find(legs.begin(), legs.end(), o) != legs.end();
+			if (o != l && (!inside || o > l)) pairs += r.overlaps(legRect(bb.leg(o)));
+		});
+		bb.forEachContextLegNear(r.cx, r.cy, std::hypot(r.hx, r.hy) + bb.maxLegRadius(), [&](Id o) {
+			pairs += r.overlaps(legRect(bb.contextLegs()[static_cast<size_t>(o)]));
+		});
+	}
+	return sum + logOverlap(pairs, p);
 }
 
 double logLegLinkGain(const Blackboard& bb, Id leg, Id table)

@@ -3,7 +3,7 @@
 
 namespace whiskermap::model
 {
-SpatialHash::SpatialHash(double cellSize, size_t buckets) : m_cellSize(cellSize), m_buckets(buckets)
+SpatialHash::SpatialHash(double cellSize, size_t buckets) : m_cellSize(cellSize), m_head(buckets, -1)
 {
 	if (!(cellSize > 0) || buckets == 0)
 		throw core::Error("SpatialHash: cell size and bucket count must be positive");
@@ -11,31 +11,39 @@ SpatialHash::SpatialHash(double cellSize, size_t buckets) : m_cellSize(cellSize)
 
 void SpatialHash::clear()
 {
-	for (auto& b : m_buckets) b.clear();
-}
-
-size_t SpatialHash::bucket(int32_t ix, int32_t iy) const
-{
-	const uint64_t h = static_cast<uint64_t>(static_cast<uint32_t>(ix)) * 73856093u ^
-					   static_cast<uint64_t>(static_cast<uint32_t>(iy)) * 19349663u;
-	return static_cast<size_t>(h % m_buckets.size());
+	std::fill(m_head.begin(), m_head.end(), -1);
+	m_nodes.clear();
+	m_free = -1;
 }
 
 void SpatialHash::insert(Id id, double x, double y)
 {
-	const int32_t ix = cell(x), iy = cell(y);
-	m_buckets[bucket(ix, iy)].push_back({ix, iy, id});
+	const int64_t ix = cell(x), iy = cell(y);
+	int32_t n = m_free;
+	if (n >= 0)
+		m_free = m_nodes[static_cast<size_t>(n)].next;
+	else
+	{
+		n = static_cast<int32_t>(m_nodes.size());
+		m_nodes.emplace_back();
+	}
+	int32_t& head = m_head[bucket(ix, iy)];
+	m_nodes[static_cast<size_t>(n)] = {ix, iy, id, head};
+	head = n;
 }
 
 void SpatialHash::erase(Id id, double x, double y)
 {
-	auto& b = m_buckets[bucket(cell(x), cell(y))];
-	for (auto& e : b)
-		if (e.id == id)
-		{
-			e = b.back();
-			b.pop_back();
-			return;
-		}
+	const int64_t ix = cell(x), iy = cell(y);
+	for (int32_t* link = &m_head[bucket(ix, iy)]; *link >= 0; link = &m_nodes[static_cast<size_t>(*link)].next)
+	{
+		Node& e = m_nodes[static_cast<size_t>(*link)];
+		if (e.id != id || e.ix != ix || e.iy != iy) continue;
+		const int32_t n = *link;
+		*link = e.next;
+		e.next = m_free;
+		m_free = n;
+		return;
+	}
 }
 }  // namespace whiskermap::model

@@ -23,10 +23,11 @@ class TableExistence
    private:
 	/** Change of logJoint when table `t` is added to `bb` with leg `leg` and the free legs it
 	 *  can reach, fitted to them (`t` leaves fitted), with invented legs at the empty corners
-	 *  that pay for themselves. */
+	 *  that pay for themselves. `bb` is left as it was. */
 	double scoreRival(model::Blackboard& bb, model::Table& t, model::Id leg);
 
-	std::vector<model::Id> m_orphans, m_adopted;
+	model::Blackboard m_without{model::ModelParams{}};  ///< scratch: the board without the table
+	std::vector<model::Id> m_orphans, m_adopted, m_invented;
 	std::vector<model::Table> m_rivals, m_scored;
 	std::vector<const model::Leg*> m_fitLegs;
 	std::vector<int> m_fitCorners;

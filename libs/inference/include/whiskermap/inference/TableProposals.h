@@ -12,8 +12,9 @@ namespace whiskermap::inference
 model::Table tableWithLegAt(const model::ModelParams& p, const model::Leg& leg, int corner, double turn);
 
 /** Appends to `out` the tables of the known size with leg `l` and another leg of the board
- *  near it at two of their corners (pair distance within 2 gates of the corners' distance),
- *  each fitted to the pair (fitTable): the table and its mirror image for every match. */
+ *  near it at two of their corners (pair distance within 2 gates of the corners' distance,
+ *  the other leg's texture within 5 sigma_tau of the table's), each fitted to the pair
+ *  (fitTable): the table and its mirror image for every match. */
 void tablesForPairs(const model::Blackboard& bb, model::Id l, std::vector<model::Table>& out);
 
 /** Fills `out` with the legs other than `l` that table `t` would adopt (l at its nearest

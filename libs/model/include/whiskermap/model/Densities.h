@@ -24,6 +24,10 @@ double logTablePrior(const ModelParams& p);
 
 /** Centre of corner i in 0..3 of a table: (+,+), (-,+), (-,-), (+,-) in the table frame. */
 void tableCorner(const Table& t, int i, const ModelParams& p, double& x, double& y);
+/** All four corners at once (one sine and cosine). */
+void tableCorners(const Table& t, const ModelParams& p, double x[4], double y[4]);
+/** The corner of `x, y` (four corners) nearest to the point (px, py), and its squared distance. */
+int nearestCorner(const double x[4], const double y[4], double px, double py, double& d2);
 
 /** Footprint (length x width) of a table, and the rectangle of a leg. */
 OrientedRect tableRect(const Table& t, const ModelParams& p);

@@ -16,6 +16,11 @@ namespace whiskermap::model
  *  through the spatial hash. */
 double logJoint(const Blackboard& bb);
 
+/** The terms of logJoint that involve table `table` or its legs (their densities, evidence,
+ *  shapelets, factors and overlaps): a change confined to the poses of a table and its legs
+ *  changes logJoint by exactly the change of this sum. */
+double logJointAround(const Blackboard& bb, Id table);
+
 /** Change of logJoint when leg `leg`, currently without a parent or with `table`, is linked
  *  to `table` rather than to nothing: its eq. 12 density and the table's phi_a, phi_b.
  *  0 for table == NONE. */

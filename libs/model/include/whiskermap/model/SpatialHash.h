@@ -8,8 +8,10 @@
 namespace whiskermap::model
 {
 /** Uniform-grid spatial hash of points (hypothesis centres): cells of a fixed size hashed
- *  into a fixed number of buckets. Buckets keep their capacity across clear(), so after
- *  warm-up inserts and queries do not allocate. Answers any radius without duplicates. */
+ *  into a fixed number of buckets, each bucket a chain of nodes in one flat array. A copy
+ *  is three flat vectors, and after warm-up inserts, erases and queries do not allocate.
+ *  Answers any radius without duplicates. For small, often copied boards; SpatialGrid suits
+ *  maps of any size. */
 class SpatialHash
 {
    public:
@@ -24,24 +26,34 @@ class SpatialHash
 	template <class F>
 	void forEachNear(double x, double y, double radius, F&& f) const
 	{
-		const int32_t x0 = cell(x - radius), x1 = cell(x + radius);
-		const int32_t y0 = cell(y - radius), y1 = cell(y + radius);
-		for (int32_t ix = x0; ix <= x1; ix++)
-			for (int32_t iy = y0; iy <= y1; iy++)
-				for (const Entry& e : m_buckets[bucket(ix, iy)])
+		const int64_t x0 = cell(x - radius), x1 = cell(x + radius);
+		const int64_t y0 = cell(y - radius), y1 = cell(y + radius);
+		for (int64_t ix = x0; ix <= x1; ix++)
+			for (int64_t iy = y0; iy <= y1; iy++)
+				for (int32_t n = m_head[bucket(ix, iy)]; n >= 0; n = m_nodes[static_cast<size_t>(n)].next)
+				{
+					const Node& e = m_nodes[static_cast<size_t>(n)];
 					if (e.ix == ix && e.iy == iy) f(e.id);
+				}
 	}
 
    private:
-	struct Entry
+	struct Node
 	{
-		int32_t ix, iy;
+		int64_t ix, iy;
 		Id id;
+		int32_t next;  ///< next node of the bucket (or of the free list), -1 at the end
 	};
-	int32_t cell(double v) const { return static_cast<int32_t>(std::floor(v / m_cellSize)); }
-	size_t bucket(int32_t ix, int32_t iy) const;
+	int64_t cell(double v) const { return static_cast<int64_t>(std::floor(v / m_cellSize)); }
+	size_t bucket(int64_t ix, int64_t iy) const
+	{
+		const uint64_t h = static_cast<uint64_t>(ix) * 0x9E3779B97F4A7C15ull ^ static_cast<uint64_t>(iy) * 0xC2B2AE3D27D4EB4Full;
+		return static_cast<size_t>((h ^ (h >> 29)) % m_head.size());
+	}
 
 	double m_cellSize;
-	std::vector<std::vector<Entry>> m_buckets;
+	std::vector<int32_t> m_head;  ///< first node per bucket, -1 if empty
+	std::vector<Node> m_nodes;
+	int32_t m_free = -1;  ///< first free node
 };
 }  // namespace whiskermap::model
