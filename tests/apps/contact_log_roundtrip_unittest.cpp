@@ -13,6 +13,8 @@
 #include <cstring>
 #include <filesystem>
 
+#include "../TempDirTest.h"
+
 using namespace whiskermap;
 namespace fs = std::filesystem;
 
@@ -58,18 +60,9 @@ void expectSameSweep(
 	}
 }
 
-class ContactLogRoundTrip : public ::testing::Test
+class ContactLogRoundTrip : public test::TempDirTest
 {
    protected:
-	void SetUp() override
-	{
-		dir = fs::temp_directory_path() /
-			  ("whiskermap_contact_log_" + std::to_string(::getpid()) + "_" +
-			   ::testing::UnitTest::GetInstance()->current_test_info()->name());
-		fs::create_directories(dir);
-	}
-	void TearDown() override { fs::remove_all(dir); }
-
 	/** Exports `rawlog`, imports it back (robot scratchbot, `noise`) in layout `fmt`, and
 	 *  returns the reimported rawlog as read; `direct` receives the reader's sweeps. */
 	obs::RawlogReader::Contents roundTrip(
@@ -93,8 +86,6 @@ class ContactLogRoundTrip : public ::testing::Test
 		out.close();
 		return obs::RawlogReader::read(back);
 	}
-
-	fs::path dir;
 };
 }  // namespace
 

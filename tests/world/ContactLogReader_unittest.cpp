@@ -9,6 +9,8 @@
 #include <fstream>
 #include <set>
 
+#include "../TempDirTest.h"
+
 using namespace whiskermap;
 using world::ContactLogReader;
 namespace fs = std::filesystem;
@@ -29,18 +31,9 @@ std::vector<ContactLogReader::Sweep> readAll(const std::string& path)
 	return out;
 }
 
-class ContactLogReaderTest : public ::testing::Test
+class ContactLogReaderTest : public test::TempDirTest
 {
    protected:
-	void SetUp() override
-	{
-		dir = fs::temp_directory_path() /
-			  ("whiskermap_clr_" + std::to_string(::getpid()) + "_" +
-			   ::testing::UnitTest::GetInstance()->current_test_info()->name());
-		fs::create_directories(dir);
-	}
-	void TearDown() override { fs::remove_all(dir); }
-
 	std::string file(const std::string& text)
 	{
 		const auto p = (dir / "log.csv").string();
@@ -64,7 +57,6 @@ class ContactLogReaderTest : public ::testing::Test
 		ADD_FAILURE() << "no error";
 		return "";
 	}
-	fs::path dir;
 };
 
 const std::string HEAD =

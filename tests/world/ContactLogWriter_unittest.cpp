@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../TempDirTest.h"
+
 using namespace whiskermap;
 using world::ContactLogWriter;
 namespace fs = std::filesystem;
@@ -17,21 +19,16 @@ namespace
 {
 const std::string SRC = WHISKERMAP_SOURCE_DIR;
 
-class ContactLogWriterTest : public ::testing::Test
+class ContactLogWriterTest : public test::TempDirTest
 {
    protected:
 	void SetUp() override
 	{
-		dir = fs::temp_directory_path() /
-			  ("whiskermap_clw_" + std::to_string(::getpid()) + "_" +
-			   ::testing::UnitTest::GetInstance()->current_test_info()->name());
-		fs::create_directories(dir);
+		TempDirTest::SetUp();
 		robot = world::Robot::load(SRC + "/config/robots/scratchbot.ini");
 		world = world::World::load(SRC + "/config/worlds/paper_arena.ini");
 	}
-	void TearDown() override { fs::remove_all(dir); }
 
-	fs::path dir;
 	world::Robot robot;
 	world::World world;
 	const obs::TSensorNoise noise{0.01, 0.05, 0.05};

@@ -1,4 +1,5 @@
 #include <whiskermap/cli/WhiskerImportApp.h>
+#include <whiskermap/cli/RawlogFormatOption.h>
 #include <whiskermap/cli/runApp.h>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/world/ContactLogReader.h>
@@ -24,11 +25,7 @@ int run(const Options& o)
 	const Robot robot = Robot::load(core::ConfigPaths::resolve(o.robot, "robots"));
 	const auto noise = NoisePreset::load(o.noise);
 	ContactLogReader in(o.in, robot, noise);
-	RawlogWriter out(
-		o.out,
-		o.format == "obs" ? RawlogWriter::Format::Observations
-						  : RawlogWriter::Format::ActionSensoryFrame,
-		RawlogWriter::GroundTruth::None);
+	RawlogWriter out(o.out, RawlogFormatOption::parse(o.format), RawlogWriter::GroundTruth::None);
 	ContactLogReader::Sweep s;
 	size_t contacts = 0;
 	while (in.next(s))
@@ -65,11 +62,7 @@ int WhiskerImportApp::main(int argc, char** argv)
 		   "Sensor noise to record in each sweep (the mapper's reading noise): noiseless, "
 		   "default, very-noisy (config/noise/) or a noise .ini")
 		->capture_default_str();
-	app.add_option(
-		   "--format", o.format,
-		   "obs: odometry + observations; action-sf: actions + sensory frames (for rbpf-slam)")
-		->check(CLI::IsMember({"obs", "action-sf"}))
-		->capture_default_str();
+	RawlogFormatOption::add(app, o.format);
 	app.add_option("-o,--out", o.out, "Output rawlog path")->required();
 	app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
 	return runApp(app, argc, argv, "whisker-import", [&] { return run(o); });
