@@ -286,21 +286,21 @@ void ContactLogReader::readReading(obs::TWhisker& w, size_t index)
 	const auto touched = field(Column::TOUCHED);
 	if (touched != "0" && touched != "1") fail(Column::TOUCHED, quote(touched) + " is not 0 or 1");
 	if (touched == "0") return;	 // untouched: the blank sweep's readings stand
-	const std::string who = "whisker " + std::to_string(index) + "'s ";
+	auto who = [&] { return "whisker " + std::to_string(index) + "'s "; };	// for messages
 	w.touched = true;
 	w.angle = degrees(Column::ANGLE_DEG);
 	const double lo = std::min(w.sweep_start, w.sweep_end),
 				 hi = std::max(w.sweep_start, w.sweep_end);
 	if (w.angle < lo - ANGLE_TOL || w.angle > hi + ANGLE_TOL)
 		fail(
-			Column::ANGLE_DEG, quote(field(Column::ANGLE_DEG)) + " deg is outside " + who +
+			Column::ANGLE_DEG, quote(field(Column::ANGLE_DEG)) + " deg is outside " + who() +
 								   "sweep [" + deg(lo) + ", " + deg(hi) + "] deg");
 	w.r = number(Column::R);
 	if (w.r < 0) fail(Column::R, quote(field(Column::R)) + " m is negative");
 	if (w.r > w.length)
 		fail(
 			Column::R,
-			quote(field(Column::R)) + " m is past " + who + "length " + num(w.length) + " m");
+			quote(field(Column::R)) + " m is past " + who() + "length " + num(w.length) + " m");
 	w.normal = degrees(Column::NORMAL_DEG);
 	w.texture = number(Column::TEXTURE);
 	if (w.texture < 0 || w.texture > 1)

@@ -72,7 +72,10 @@ void ContactLogWriter::checkSameSensor(const obs::CObservationWhiskerContacts& s
 	};
 	const auto& f = m_first;
 	if (s.sensorLabel != f.sensorLabel) fail("the sensor label");
-	if (!(s.sensorPose == f.sensorPose)) fail("the sensor pose");
+	// Exact comparisons (CPose3D's own == allows a tolerance on the rotation).
+	if (s.sensorPose.m_coords != f.sensorPose.m_coords ||
+		s.sensorPose.getRotationMatrix() != f.sensorPose.getRotationMatrix())
+		fail("the sensor pose");
 	if (s.noise.sigma_r != f.noise.sigma_r || s.noise.sigma_phi != f.noise.sigma_phi ||
 		s.noise.sigma_tau != f.noise.sigma_tau)
 		fail("the noise");
