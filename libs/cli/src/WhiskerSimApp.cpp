@@ -6,6 +6,7 @@
 #include <whiskermap/world/RawlogWriter.h>
 #include <whiskermap/world/Trajectory.h>
 #include <whiskermap/cli/WhiskerSimApp.h>
+#include <whiskermap/cli/RawlogFormatOption.h>
 #include <whiskermap/cli/runApp.h>
 #include <whiskermap/world/WhiskerSimulator.h>
 
@@ -60,9 +61,7 @@ int run(const Options& o)
 
 	// Fixed, synthetic clock: one sweep per second from a fixed epoch (reproducible bytes).
 	const double t0 = 1300000000.0;
-	RawlogWriter out(
-		o.out, o.format == "obs" ? RawlogWriter::Format::Observations
-								 : RawlogWriter::Format::ActionSensoryFrame);
+	RawlogWriter out(o.out, RawlogFormatOption::parse(o.format));
 	render::TopDownImage picture(w.x_min, w.x_max, w.y_min, w.y_max);
 	ContactStatistic stat;
 	size_t written = 0, skipped = 0, contacts = 0, wallContacts = 0;
@@ -153,11 +152,7 @@ int WhiskerSimApp::main(int argc, char** argv)
 		->capture_default_str();
 	app.add_option("--seed", o.seed, "Random seed; the same seed gives the same bytes")
 		->capture_default_str();
-	app.add_option(
-		   "--format", o.format,
-		   "obs: odometry + observations; action-sf: actions + sensory frames (for rbpf-slam)")
-		->check(CLI::IsMember({"obs", "action-sf"}))
-		->capture_default_str();
+	RawlogFormatOption::add(app, o.format);
 	app.add_option("-o,--out", o.out, "Output rawlog path")->required();
 	app.add_option("--png", o.png, "Also draw the world, poses and contacts into this PNG");
 	app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");

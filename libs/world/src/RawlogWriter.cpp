@@ -19,11 +19,14 @@ std::string RawlogWriter::groundTruthPathFile(const std::string& rawlogPath)
 	return (p.parent_path() / (p.stem().string() + "_ground_truth_robot_path.txt")).string();
 }
 
-RawlogWriter::RawlogWriter(const std::string& rawlogPath, Format format)
-	: m_path(rawlogPath), m_gtPath(groundTruthPathFile(rawlogPath)), m_format(format)
+RawlogWriter::RawlogWriter(const std::string& rawlogPath, Format format, GroundTruth groundTruth)
+	: m_path(rawlogPath),
+	  m_gtPath(groundTruth == GroundTruth::Write ? groundTruthPathFile(rawlogPath) : ""),
+	  m_format(format)
 {
 	if (!m_out.open(m_path + ".tmp"))
 		throw core::Error(m_path + ": cannot create file (does its folder exist?)");
+	if (m_gtPath.empty()) return;
 	m_gt.open(m_gtPath + ".tmp");
 	if (!m_gt) throw core::Error(m_gtPath + ": cannot create file");
 	m_gt << "% Ground truth robot path, one line per whisker sweep in the rawlog\n"
@@ -37,7 +40,7 @@ RawlogWriter::~RawlogWriter()
 	m_gt.close();
 	std::error_code ec;
 	fs::remove(m_path + ".tmp", ec);
-	fs::remove(m_gtPath + ".tmp", ec);
+	if (!m_gtPath.empty()) fs::remove(m_gtPath + ".tmp", ec);
 }
 
 void RawlogWriter::write(
@@ -66,6 +69,7 @@ void RawlogWriter::write(
 		arch << acts << sf;
 	}
 	m_last = pose;
+	if (m_gtPath.empty()) return;
 	char line[160];
 	std::snprintf(
 		line, sizeof(line), "%.6f %.9f %.9f %.9f\n",
@@ -77,9 +81,9 @@ void RawlogWriter::close()
 {
 	m_out.close();
 	m_gt.close();
-	if (!m_gt) throw core::Error(m_gtPath + ": write failed");
+	if (!m_gtPath.empty() && !m_gt) throw core::Error(m_gtPath + ": write failed");
 	fs::rename(m_path + ".tmp", m_path);
-	fs::rename(m_gtPath + ".tmp", m_gtPath);
+	if (!m_gtPath.empty()) fs::rename(m_gtPath + ".tmp", m_gtPath);
 	m_closed = true;
 }
 }  // namespace whiskermap::world

@@ -3,7 +3,6 @@
 #include <whiskermap/core/IniSection.h>
 #include <whiskermap/world/Robot.h>
 
-
 namespace whiskermap::world
 {
 Robot Robot::load(const std::string& path)
@@ -44,5 +43,23 @@ Robot Robot::load(const std::string& path)
 			std::stol("0" + s.substr(8)) >= n)
 			throw core::Error(path + ": [" + s + "]: beyond whisker_count=" + std::to_string(n));
 	return r;
+}
+
+obs::CObservationWhiskerContacts::Ptr Robot::blankSweep(
+	const obs::TSensorNoise& noise, mrpt::Clock::time_point stamp) const
+{
+	auto o = std::make_shared<obs::CObservationWhiskerContacts>();
+	o->timestamp = stamp;
+	o->sensorLabel = "WHISKERS";
+	o->sensorPose = sensorPose;
+	o->noise = noise;
+	o->whiskers = whiskers;
+	for (auto& w : o->whiskers)
+	{
+		w.touched = false;
+		w.angle = w.sweep_end;
+		w.r = w.normal = w.texture = 0;
+	}
+	return o;
 }
 }  // namespace whiskermap::world

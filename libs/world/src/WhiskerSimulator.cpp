@@ -27,12 +27,7 @@ bool WhiskerSimulator::poseIsFree(const mrpt::poses::CPose2D& pose) const
 obs::CObservationWhiskerContacts::Ptr WhiskerSimulator::sense(
 	const mrpt::poses::CPose2D& pose, mrpt::Clock::time_point stamp, std::vector<Truth>* truth)
 {
-	auto o = std::make_shared<obs::CObservationWhiskerContacts>();
-	o->timestamp = stamp;
-	o->sensorLabel = "WHISKERS";
-	o->sensorPose = m_robot.sensorPose;
-	o->noise = m_noise;
-	o->whiskers = m_robot.whiskers;
+	auto o = m_robot.blankSweep(m_noise, stamp);
 	if (truth) truth->assign(o->whiskers.size(), Truth{});
 
 	// Work in the world frame: sensor frame = robot pose + sensor pose (planar).
@@ -45,12 +40,8 @@ obs::CObservationWhiskerContacts::Ptr WhiskerSimulator::sense(
 		sensor.composePoint(w.mount_x, w.mount_y, 0, px, py, pz);
 		const auto c = WhiskerContact::first(
 			{px, py}, w.length, yaw + w.sweep_start, yaw + w.sweep_end, m_obstacles);
-		w.touched = c.has_value();
-		if (!c)
-		{
-			w.angle = w.sweep_end;
-			continue;
-		}
+		if (!c) continue;
+		w.touched = true;
 		const Obstacle& hit = m_obstacles[c->obstacle];
 		if (truth) (*truth)[i] = Truth{hit.table, hit.leg, hit.table < 0};
 		// Reading noise (eqs. 1-3); clamped so a reading stays physically possible.

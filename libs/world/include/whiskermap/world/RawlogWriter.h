@@ -9,8 +9,8 @@
 
 namespace whiskermap::world
 {
-/** Writes whisker sweeps with their robot poses as an MRPT rawlog, plus MRPT-simulator style
- *  ground truth `<name>_ground_truth_robot_path.txt` beside it.
+/** Writes whisker sweeps with their robot poses as an MRPT rawlog, plus (unless told not to)
+ *  MRPT-simulator style ground truth `<name>_ground_truth_robot_path.txt` beside it.
  *
  *  Formats: Observations writes a CObservationOdometry (the absolute pose) before each sweep;
  *  ActionSensoryFrame writes, per sweep, a CActionCollection holding a CActionRobotMovement2D
@@ -28,7 +28,16 @@ class RawlogWriter
 		ActionSensoryFrame
 	};
 
-	RawlogWriter(const std::string& rawlogPath, Format format);
+	/** Write: the poses are the truth (a simulation), recorded beside the rawlog; None: they
+	 *  are only odometry (an imported log), nothing is written beside it. */
+	enum class GroundTruth
+	{
+		Write,
+		None
+	};
+
+	RawlogWriter(
+		const std::string& rawlogPath, Format format, GroundTruth groundTruth = GroundTruth::Write);
 	~RawlogWriter();  ///< removes the temporary files if close() was not reached
 
 	/** Appends a sweep (validated first: throws core::Error on a bad value). */

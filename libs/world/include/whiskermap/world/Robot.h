@@ -1,5 +1,6 @@
 #pragma once
 #include <mrpt/poses/CPose3D.h>
+#include <whiskermap/obs/CObservationWhiskerContacts.h>
 #include <whiskermap/obs/TWhisker.h>
 
 #include <string>
@@ -16,5 +17,11 @@ struct Robot
 	std::vector<obs::TWhisker> whiskers;  ///< mountings; reading fields unused
 
 	static Robot load(const std::string& path);
+
+	/** A sweep (label WHISKERS) in which no whisker touched anything: this robot's sensor
+	 *  pose and mountings, and the readings an untouched whisker carries (angle = sweep_end,
+	 *  r = normal = texture = 0). The simulator and the contact-log reader fill in contacts. */
+	obs::CObservationWhiskerContacts::Ptr blankSweep(
+		const obs::TSensorNoise& noise, mrpt::Clock::time_point stamp) const;
 };
 }  // namespace whiskermap::world

@@ -1,0 +1,3 @@
+#include <whiskermap/cli/WhiskerImportApp.h>
+
+int main(int argc, char** argv) { return whiskermap::cli::WhiskerImportApp::main(argc, argv); }
