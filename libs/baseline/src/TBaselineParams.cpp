@@ -1,4 +1,5 @@
 #include <whiskermap/baseline/TBaselineParams.h>
+#include <whiskermap/core/Error.h>
 #include <whiskermap/core/IniSection.h>
 #include <whiskermap/model/ModelParams.h>
 
@@ -7,6 +8,8 @@ namespace whiskermap::baseline
 TBaselineParams TBaselineParams::fromConfig(const std::string& path)
 {
 	const auto file = core::openIniFile(path, "config file");
+	if (!file->sectionExists("MetricMap"))
+		throw core::Error(path + ": not a whisker-map configuration (no [MetricMap] section)");
 	TBaselineParams p;
 	const std::string section = "MetricMap_hierarchicalObjectMap_00_model";
 	if (!file->sectionExists(section)) return p;

@@ -172,6 +172,25 @@ std::string WorldGenerator::Scenario::description() const
 		audit.contacts.size(), audit.tableContacts(), audit.identifiable(), world.tables.size());
 	s += buf;
 	for (const auto& b : audit.legsTouched) s += " " + std::to_string(b.count());
+	// Side-by-side pairs: two legs of one table within 25 cm of two legs of another.
+	std::string pairs;
+	for (size_t i = 0; i < world.tables.size(); i++)
+		for (size_t j = i + 1; j < world.tables.size(); j++)
+		{
+			int facing = 0;
+			double closest = INFINITY;
+			for (int a = 0; a < 4; a++)
+				for (int b = 0; b < 4; b++)
+				{
+					const double d = (world.tables[i].legCentre(a) - world.tables[j].legCentre(b)).norm();
+					facing += d <= 0.25;
+					closest = std::min(closest, d);
+				}
+			if (facing != 2) continue;
+			std::snprintf(buf, sizeof(buf), "%s tables %zu+%zu %.3f m", pairs.empty() ? "" : ",", i, j, closest);
+			pairs += buf;
+		}
+	if (!pairs.empty()) s += "\nside-by-side pairs, facing leg centres apart:" + pairs;
 	const size_t spacing = audit.closestCrossLegSpacing();
 	s += "\nclosest contacts on two legs of one table: " +
 		 (spacing == SIZE_MAX ? std::string("never") : std::to_string(spacing) + " contacts apart") + "\n";

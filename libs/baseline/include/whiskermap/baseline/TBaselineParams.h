@@ -31,7 +31,8 @@ struct TBaselineParams
 
 	/** The known table from the [MetricMap_hierarchicalObjectMap_00_model] section of a
 	 *  whisker-map .ini (model::ModelParams, read strictly); built-in defaults when the file
-	 *  has no such section. Throws core::Error naming the file. */
+	 *  has no such section, as for whisker-map. Throws core::Error naming the file when it is
+	 *  missing, malformed, has no [MetricMap] section or a bad model key. */
 	static TBaselineParams fromConfig(const std::string& path);
 };
 }  // namespace whiskermap::baseline
