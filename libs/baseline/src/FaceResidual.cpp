@@ -1,6 +1,7 @@
 #include <whiskermap/baseline/FaceResidual.h>
 #include <whiskermap/core/Angles.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 namespace whiskermap::baseline
@@ -39,5 +40,48 @@ FaceResidual FaceResidual::best(const Contact& c, const Eigen::Vector2d& centre,
 bool FaceResidual::outlier(const TBaselineParams& p) const
 {
 	return std::abs(point) > p.outlier_gate || std::abs(normal) > p.outlier_gate || beyond > p.outlier_gate;
+}
+
+LeastSquares::Result FaceResidual::fitPose(
+	const std::vector<Contact>& contacts, const std::vector<Member>& members, const Eigen::Vector3d& start,
+	const TBaselineParams& p, const LeastSquares::Residuals& prior)
+{
+	auto centre = [](const Eigen::Vector3d& v, const Member& m) {
+		return Eigen::Vector2d(v.head<2>() + Eigen::Rotation2Dd(v[2]) * m.offset);
+	};
+	std::vector<int> faces(members.size(), -1);
+	auto assignFaces = [&](const Eigen::Vector3d& v) {
+		bool changed = false;
+		for (size_t j = 0; j < members.size(); j++)
+		{
+			const int f = best(contacts[members[j].contact], centre(v, members[j]), v[2], p).face;
+			changed = changed || f != faces[j];
+			faces[j] = f;
+		}
+		return changed;
+	};
+	const auto residuals = [&](const Eigen::Vector3d& v, std::vector<double>& out) {
+		out.clear();
+		for (size_t j = 0; j < members.size(); j++)
+		{
+			const auto r = on(contacts[members[j].contact], centre(v, members[j]), v[2], faces[j], p);
+			out.push_back(LeastSquares::huber(r.point));
+			out.push_back(LeastSquares::huber(r.normal));
+			out.push_back(LeastSquares::huber(r.beyond));
+		}
+		if (!prior) return;
+		std::vector<double> extra;
+		prior(v, extra);
+		out.insert(out.end(), extra.begin(), extra.end());
+	};
+	assignFaces(start);
+	LeastSquares::Result res;
+	res.x = start;
+	for (int round = 0; round < 4; round++)
+	{
+		res = LeastSquares::solve(res.x, residuals);
+		if (!assignFaces(res.x)) break;
+	}
+	return res;
 }
 }  // namespace whiskermap::baseline

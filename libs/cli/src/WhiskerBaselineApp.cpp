@@ -6,7 +6,6 @@
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/core/Error.h>
-#include <whiskermap/eval/TableCsv.h>
 
 #include <cstdio>
 #include <iostream>
@@ -39,7 +38,8 @@ void close(FILE* f, const std::string& path)
 void writeTables(const std::string& path, const baseline::BatchFit& fit, const baseline::TBaselineParams& p)
 {
 	FILE* f = create(path);
-	std::fprintf(f, "%s\n", eval::TableCsv::MAP_HEADER);
+	// whisker-map's columns as of this writing; whisker-eval reads the first eight by position.
+	std::fprintf(f, "id,x,y,yaw_deg,length,width,leg_width,texture,existence,support\n");
 	for (size_t i = 0; i < fit.tables.size(); i++)
 	{
 		const auto& t = fit.tables[i];

@@ -1,6 +1,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <whiskermap/baseline/Contact.h>
+#include <whiskermap/baseline/LeastSquares.h>
 #include <whiskermap/baseline/TBaselineParams.h>
 
 namespace whiskermap::baseline
@@ -26,5 +27,20 @@ struct FaceResidual
 	double cost() const { return point * point + normal * normal + beyond * beyond; }
 	/** True when any of the three exceeds the outlier gate. */
 	bool outlier(const TBaselineParams& p) const;
+
+	/** A contact of a rigid set of square legs posed at (x, y, yaw): its leg's centre sits at
+	 *  `offset` in that frame, and the leg turns with the frame. */
+	struct Member
+	{
+		size_t contact;
+		Eigen::Vector2d offset;
+	};
+
+	/** Least-squares pose of such a set from its contacts: the three residuals of each
+	 *  contact on its face (Huber's loss), plus `prior`'s residuals if given; faces are
+	 *  reassigned to the best fitting ones and the fit repeated, up to 4 rounds. */
+	static LeastSquares::Result fitPose(
+		const std::vector<Contact>& contacts, const std::vector<Member>& members, const Eigen::Vector3d& start,
+		const TBaselineParams& p, const LeastSquares::Residuals& prior = nullptr);
 };
 }  // namespace whiskermap::baseline
