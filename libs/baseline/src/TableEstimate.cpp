@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 
 namespace whiskermap::baseline
 {
@@ -25,6 +26,8 @@ Eigen::Vector2d TableEstimate::corner(int k, const TBaselineParams& p) const
 
 bool TableEstimate::overlaps(const TableEstimate& o, const TBaselineParams& p) const
 {
+	const double halfDiagonal = std::hypot(p.table_length + p.leg_width, p.table_width + p.leg_width) / 2;
+	if ((centre - o.centre).norm() > 2 * halfDiagonal) return false;
 	auto footprint = [&](const TableEstimate& t) {
 		return world::Obstacle::rectangle(
 			t.centre, t.yaw, (p.table_length + p.leg_width) / 2, (p.table_width + p.leg_width) / 2, 0);
