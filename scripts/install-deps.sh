@@ -3,12 +3,12 @@
 # Idempotent: packages already installed are skipped, and apt is not touched at all
 # when everything is present. Usage: scripts/install-deps.sh [--tools]
 #   --tools  also install the stock MRPT / OctoMap tools used by the tests
-#            (rawlog-edit, pf-localization, convert_octree).
+#            (rawlog-edit, pf-localization, convert_octree) and python3 (scripts/eval-categories.sh).
 set -euo pipefail
 
 build_pkgs=(cmake g++ make pkg-config libmrpt-maps-dev libmrpt-slam-dev
             libeigen3-dev liboctomap-dev libgtest-dev libbenchmark-dev libcli11-dev)
-tool_pkgs=(mrpt-apps octomap-tools)
+tool_pkgs=(mrpt-apps octomap-tools python3)
 
 want=("${build_pkgs[@]}")
 [[ "${1:-}" == "--tools" ]] && want+=("${tool_pkgs[@]}")

@@ -35,24 +35,34 @@ std::string slurp(const std::string& path)
 }
 }  // namespace
 
-TEST(WhiskerMap, StreamingParallelRunEqualsTheMapLibrary)
+TEST(WhiskerMap, StreamingRunEqualsTheMapLibrary)
 {
-	// whisker-map streams the rawlog and solves steps on 2 threads; the map class used
-	// directly (insertObservation, in order) must give the very same per-pose and map CSVs.
+	// whisker-map streams the rawlog (the per-pose mode solving steps on 2 threads); the map
+	// class used directly (insertObservation, in order) must give the very same CSVs.
 	const std::string data = SRC + "/datasets/paper_arena/default.rawlog";
-	const auto out = (fs::temp_directory_path() / "whiskermap_stream_test").string();
-	fs::remove_all(out);
-	ASSERT_EQ(runWhiskerMap({"-q", "-j", "2", "-i", data, "-o", out}), 0);
+	for (const std::string mode : {"lasting", "per_pose"})
+	{
+		const auto out = (fs::temp_directory_path() / ("whiskermap_stream_test_" + mode)).string();
+		fs::remove_all(out);
+		ASSERT_EQ(runWhiskerMap({"-q", "-j", "2", "--mode", mode, "-i", data, "-o", out}), 0);
 
-	mrpt::maps::CMultiMetricMap mm(whiskermap::maps::MapConfig::load(SRC + "/config/whisker-map.ini"));
-	auto map = mm.mapByClass<whiskermap::maps::CHierarchicalObjectMap>();
-	for (const auto& s : whiskermap::obs::RawlogReader::read(data).sweeps)
-		mm.insertObservation(*s.obs, mrpt::poses::CPose3D(s.robotPose));
-	map->saveMetricMapRepresentationToFile(out + "/lib");
-	EXPECT_EQ(slurp(out + "/per_pose_tables.csv"), slurp(out + "/lib_per_pose_tables.csv"));
-	EXPECT_EQ(slurp(out + "/map_tables.csv"), slurp(out + "/lib_map_tables.csv"));
-	EXPECT_GT(slurp(out + "/per_pose_tables.csv").size(), 1000u);
-	fs::remove_all(out);
+		mrpt::maps::CMultiMetricMap mm(whiskermap::maps::MapConfig::load(SRC + "/config/whisker-map.ini"));
+		auto map = mm.mapByClass<whiskermap::maps::CHierarchicalObjectMap>();
+		map->insertionOptions.mode = mode == "lasting" ? whiskermap::maps::CHierarchicalObjectMap::TInsertionOptions::TMode::Lasting
+													   : whiskermap::maps::CHierarchicalObjectMap::TInsertionOptions::TMode::PerPose;
+		for (const auto& s : whiskermap::obs::RawlogReader::read(data).sweeps)
+			mm.insertObservation(*s.obs, mrpt::poses::CPose3D(s.robotPose));
+		map->saveMetricMapRepresentationToFile(out + "/lib");
+		EXPECT_EQ(slurp(out + "/map_tables.csv"), slurp(out + "/lib_map_tables.csv")) << mode;
+		EXPECT_EQ(slurp(out + "/map_candidates.csv"), slurp(out + "/lib_map_candidates.csv")) << mode;
+		EXPECT_GT(slurp(out + "/map_tables.csv").size(), 300u) << mode;
+		if (mode == "per_pose")
+		{
+			EXPECT_EQ(slurp(out + "/per_pose_tables.csv"), slurp(out + "/lib_per_pose_tables.csv"));
+			EXPECT_GT(slurp(out + "/per_pose_tables.csv").size(), 1000u);
+		}
+		fs::remove_all(out);
+	}
 }
 
 TEST(WhiskerMap, SceneReloadsWithTheSupportedTables)
@@ -62,7 +72,7 @@ TEST(WhiskerMap, SceneReloadsWithTheSupportedTables)
 	ASSERT_EQ(runWhiskerMap({"-q", "-i", SRC + "/datasets/paper_arena/noiseless.rawlog", "-o", out}), 0);
 	const std::string text = slurp(out + "/summary.json");
 	std::smatch m;
-	ASSERT_TRUE(std::regex_search(text, m, std::regex("\"map_objects_supported\": (\\d+)")));
+	ASSERT_TRUE(std::regex_search(text, m, std::regex("\"map_tables\": (\\d+)")));
 	const size_t supported = std::stoul(m[1]);
 	ASSERT_GE(supported, 6u);
 
@@ -99,32 +109,39 @@ double jsonNumber(const std::string& json, const std::string& key)
 
 TEST(WhiskerMap, RegressionFloorsOnTheShippedDatasets)
 {
-	// whisker-map (seed 1) on each shipped dataset, evaluated against the paper arena: the
-	// consolidated map's F1 may not drop, nor its centre error grow, past the values
-	// measured on 2026-11-22 with a stated margin (doc/results.md):
-	//   dataset     F1 (floor)   RMSE m (ceiling)      per-pose local F1 (floor)
-	//   noiseless   1.00 (0.90)  0.0045 (0.0090)       0.133 (0.08)
-	//   default     1.00 (0.90)  0.0053 (0.0110)       0.098 (0.08)
-	//   very-noisy  1.00 (0.90)  0.0116 (0.0250)       0.098 (0.08)
-	// A floor of 0.90 lets one table go spurious (F1 0.92) but not one go missing as well.
+	// whisker-map (seed 1) on each shipped dataset, evaluated against the paper arena, in
+	// both modes: map_tables.csv scored as written may not lose F1, nor its centre error
+	// grow, past the figures measured on 2026-11-28 with a stated margin (doc/results.md).
+	//   lasting map:  dataset     F1 (floor)   RMSE m (ceiling)
+	//                 noiseless   1.00 (1.00)  0.0002 (0.0010)
+	//                 default     1.00 (1.00)  0.0006 (0.0020)
+	//                 very-noisy  1.00 (1.00)  0.0035 (0.0080)
+	//   per-pose mode: the paper's; the same floors as before the lasting map (F1 0.90 lets
+	//   one table go spurious, not one go missing as well), and per-pose local F1 >= 0.08.
 	struct Floor
 	{
+		const char* mode;
 		const char* dataset;
 		double f1, rmse, localF1;
 	};
-	for (const Floor& f : {Floor{"noiseless", 0.90, 0.0090, 0.08}, Floor{"default", 0.90, 0.0110, 0.08},
-						   Floor{"very-noisy", 0.90, 0.0250, 0.08}})
+	for (const Floor& f : {Floor{"lasting", "noiseless", 1.0, 0.0010, -1}, Floor{"lasting", "default", 1.0, 0.0020, -1},
+						   Floor{"lasting", "very-noisy", 1.0, 0.0080, -1}, Floor{"per_pose", "noiseless", 0.90, 0.0090, 0.08},
+						   Floor{"per_pose", "default", 0.90, 0.0110, 0.08}, Floor{"per_pose", "very-noisy", 0.90, 0.0250, 0.08}})
 	{
-		const auto out = (fs::temp_directory_path() / (std::string("whiskermap_floor_") + f.dataset)).string();
+		const std::string what = std::string(f.mode) + " " + f.dataset;
+		const auto out = (fs::temp_directory_path() / (std::string("whiskermap_floor_") + f.mode + f.dataset)).string();
 		fs::remove_all(out);
-		ASSERT_EQ(runWhiskerMap({"-q", "--seed", "1", "-i", SRC + "/datasets/paper_arena/" + f.dataset + ".rawlog",
+		ASSERT_EQ(runWhiskerMap({"-q", "--seed", "1", "--mode", f.mode, "-i", SRC + "/datasets/paper_arena/" + f.dataset + ".rawlog",
 								 "--world", SRC + "/config/worlds/paper_arena.ini", "-o", out}),
 				  0);
 		const std::string metrics = slurp(out + "/metrics.json");
-		EXPECT_GE(jsonNumber(metrics, "f1"), f.f1) << f.dataset;
-		EXPECT_LE(jsonNumber(metrics, "rmse_m"), f.rmse) << f.dataset;
-		const std::string local = metrics.substr(metrics.find("\"local\""));
-		EXPECT_GE(jsonNumber(local, "f1"), f.localF1) << f.dataset;
+		EXPECT_GE(jsonNumber(metrics, "f1"), f.f1) << what;
+		EXPECT_LE(jsonNumber(metrics, "rmse_m"), f.rmse) << what;
+		if (f.localF1 >= 0)
+		{
+			const std::string local = metrics.substr(metrics.find("\"local\""));
+			EXPECT_GE(jsonNumber(local, "f1"), f.localF1) << what;
+		}
 		fs::remove_all(out);
 	}
 }

@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 using namespace whiskermap;
 using maps::CHierarchicalObjectMap;
@@ -22,24 +23,48 @@ namespace
 const std::string SRC = WHISKERMAP_SOURCE_DIR;
 const std::string CONFIG = SRC + "/config/whisker-map.ini";
 
+using TMode = CHierarchicalObjectMap::TInsertionOptions::TMode;
+
 /** The shipped config's multimap after every sweep of a shipped dataset (built once). */
 struct Mapped
 {
 	mrpt::maps::CMultiMetricMap multimap;
 	obs::RawlogReader::Contents rawlog;
 	CHierarchicalObjectMap::Ptr map;
-	explicit Mapped(const std::string& preset)
+	Mapped(const std::string& preset, TMode mode)
 		: multimap(maps::MapConfig::load(CONFIG)),
 		  rawlog(obs::RawlogReader::read(SRC + "/datasets/paper_arena/" + preset + ".rawlog")),
 		  map(multimap.mapByClass<CHierarchicalObjectMap>())
 	{
+		map->insertionOptions.mode = mode;
 		for (const auto& s : rawlog.sweeps) multimap.insertObservation(*s.obs, mrpt::poses::CPose3D(s.robotPose));
 	}
 };
 const Mapped& defaultMapped()
 {
-	static const Mapped m("default");
+	static const Mapped m("default", TMode::Lasting);
 	return m;
+}
+const Mapped& perPoseMapped()
+{
+	static const Mapped m("default", TMode::PerPose);
+	return m;
+}
+
+/** Everything the lasting state holds, as numbers: equal states give equal prints. */
+std::string fingerprint(const CHierarchicalObjectMap& m)
+{
+	const auto& s = m.lastingMap().state();
+	std::ostringstream o;
+	o.precision(17);
+	for (model::Id t = 0; t < s.tableIdBound(); t++)
+		if (s.hasTable(t)) o << "T" << s.table(t).x << "," << s.table(t).y << "," << s.table(t).theta << "," << s.existence(t) << ";";
+	for (model::Id l = 0; l < s.legIdBound(); l++)
+		if (s.hasLeg(l))
+			o << "L" << s.leg(l).x << "," << s.leg(l).y << "," << s.leg(l).theta << "," << s.leg(l).parent << ","
+			  << s.evidence(l).count() << "," << s.contactsOf(l).size() << ";";
+	o << "C" << s.contactCount();
+	return o.str();
 }
 
 std::string configError(const std::string& text)
@@ -65,7 +90,9 @@ TEST(CHierarchicalObjectMap, IsCreatedByNameFromTheShippedIni)
 	auto map = mm.mapByClass<CHierarchicalObjectMap>();
 	ASSERT_TRUE(map);
 	EXPECT_TRUE(map->isEmpty());
+	EXPECT_TRUE(map->lasting());
 	EXPECT_EQ(map->insertionOptions.memory_size, 7u);
+	EXPECT_DOUBLE_EQ(map->likelihoodOptions.min_existence, 0.5);
 	EXPECT_EQ(map->likelihoodOptions.min_support, 3u);
 	EXPECT_DOUBLE_EQ(map->modelParams.texture, 0.7);
 }
@@ -80,12 +107,40 @@ TEST(CHierarchicalObjectMap, ConfigMistakesFailLoudly)
 	EXPECT_NE(configError(ok + "[MetricMap_hierarchicalObjectMap_00_insertOpt]\nmemory_size=7\n").find("unknown section"), std::string::npos);
 	EXPECT_NE(configError(ok + "[MetricMap_hierarchicalObjectMap_00_likelihoodOpts]\np_miss=2\n").find("p_miss"), std::string::npos);
 	EXPECT_NE(configError(ok + "[MetricMap_hierarchicalObjectMap_00_model]\nsigma_r=0.01\n").find("missing required key"), std::string::npos);
+	EXPECT_NE(configError(ok + "[MetricMap_hierarchicalObjectMap_00_insertOpts]\nmode=lastin\n").find("'lastin' is not lasting or per_pose"), std::string::npos);
+	EXPECT_NE(configError(ok + "[MetricMap_hierarchicalObjectMap_00_likelihoodOpts]\nmin_existence=1.5\n").find("min_existence"), std::string::npos);
 	EXPECT_NE(configError("[MetricMap]\n").find("needs exactly one"), std::string::npos);
 }
 
-TEST(CHierarchicalObjectMap, FindsEveryTableOfThePaperArena)
+// The lasting map of the default dataset: exactly the six tables, each within 3 mm and half
+// a degree, certain, touched on at least two legs; no other table in the state.
+TEST(CHierarchicalObjectMap, LastingMapHoldsEveryTableOfThePaperArena)
 {
 	const auto& m = defaultMapped();
+	const auto truth = world::World::load(SRC + "/config/worlds/paper_arena.ini");
+	EXPECT_EQ(m.map->poseRecords().size(), 400u);
+	const auto objects = m.map->mapObjects();
+	ASSERT_EQ(objects.size(), truth.tables.size());
+	EXPECT_TRUE(m.map->candidateObjects().empty());
+	for (const auto& t : truth.tables)
+	{
+		bool found = false;
+		for (const auto& o : objects)
+			found = found || (std::hypot(o.table.x - t.x, o.table.y - t.y) < 0.003 &&
+							  std::abs(core::angleDiff(o.table.yaw, t.yaw, M_PI)) < core::deg2rad(0.5) &&
+							  o.existence > 0.99 && o.legs >= 2 && o.contacts >= 20);
+		EXPECT_TRUE(found) << "table at " << t.x << ", " << t.y;
+	}
+	// Memory grows with objects: a leg keeps at most contacts_per_leg explicit contacts.
+	const auto& s = m.map->lastingMap().state();
+	for (model::Id l = 0; l < s.legIdBound(); l++)
+		if (s.hasLeg(l)) EXPECT_LE(s.contactsOf(l).size(), m.map->insertionOptions.lasting.contacts_per_leg);
+}
+
+// The paper's per-pose mode, as before: every table found at 3 or more poses.
+TEST(CHierarchicalObjectMap, PerPoseModeFindsEveryTableOfThePaperArena)
+{
+	const auto& m = perPoseMapped();
 	const auto truth = world::World::load(SRC + "/config/worlds/paper_arena.ini");
 	EXPECT_EQ(m.map->poseRecords().size(), 400u);
 	for (const auto& t : truth.tables)
@@ -96,6 +151,7 @@ TEST(CHierarchicalObjectMap, FindsEveryTableOfThePaperArena)
 							  std::abs(core::angleDiff(o.table.yaw, t.yaw, M_PI)) < core::deg2rad(5));
 		EXPECT_TRUE(found) << "table at " << t.x << ", " << t.y;
 	}
+	EXPECT_EQ(m.map->mapObjects().size() + m.map->candidateObjects().size(), m.map->objects().size());
 }
 
 TEST(CHierarchicalObjectMap, LikelihoodPeaksAtTheTruePoses)
@@ -130,15 +186,10 @@ TEST(CHierarchicalObjectMap, SerializationRoundTripThroughCMultiMetricMap)
 	arch >> back;
 	auto b = back.mapByClass<CHierarchicalObjectMap>();
 	ASSERT_TRUE(b);
-	ASSERT_EQ(b->objects().size(), m.map->objects().size());
-	for (size_t i = 0; i < b->objects().size(); i++)
-	{
-		EXPECT_EQ(b->objects()[i].table.x, m.map->objects()[i].table.x);
-		EXPECT_EQ(b->objects()[i].support, m.map->objects()[i].support);
-		EXPECT_EQ(b->objects()[i].evidence, m.map->objects()[i].evidence);
-	}
+	EXPECT_TRUE(b->lasting());
+	EXPECT_EQ(fingerprint(*b), fingerprint(*m.map));
+	EXPECT_GT(b->lastingMap().state().legCount(), 50u);
 	ASSERT_EQ(b->poseRecords().size(), m.map->poseRecords().size());
-	EXPECT_EQ(b->poseRecords()[123].logPosterior, m.map->poseRecords()[123].logPosterior);
 	EXPECT_EQ(b->shapelets().size(), m.map->shapelets().size());
 	EXPECT_EQ(b->proposed(), m.map->proposed());
 	EXPECT_EQ(b->asString(), m.map->asString());
@@ -148,10 +199,71 @@ TEST(CHierarchicalObjectMap, SerializationRoundTripThroughCMultiMetricMap)
 			  m.map->computeObservationLikelihood(*s.obs, mrpt::poses::CPose3D(s.robotPose)));
 }
 
-TEST(CHierarchicalObjectMap, SameSeedSameMapAndCopiesContinueIdentically)
+// The per-pose mode's consolidation survives the round trip too (objects and records).
+TEST(CHierarchicalObjectMap, PerPoseSerializationRoundTrip)
+{
+	const auto& m = perPoseMapped();
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << m.multimap;
+	buf.Seek(0);
+	mrpt::maps::CMultiMetricMap back;
+	arch >> back;
+	auto b = back.mapByClass<CHierarchicalObjectMap>();
+	ASSERT_TRUE(b);
+	EXPECT_FALSE(b->lasting());
+	ASSERT_EQ(b->objects().size(), m.map->objects().size());
+	for (size_t i = 0; i < b->objects().size(); i++)
+	{
+		EXPECT_EQ(b->objects()[i].table.x, m.map->objects()[i].table.x);
+		EXPECT_EQ(b->objects()[i].support, m.map->objects()[i].support);
+		EXPECT_EQ(b->objects()[i].evidence, m.map->objects()[i].evidence);
+		EXPECT_EQ(b->objects()[i].contacts, m.map->objects()[i].contacts);
+		EXPECT_EQ(b->objects()[i].legMask, m.map->objects()[i].legMask);
+	}
+	ASSERT_EQ(b->poseRecords().size(), m.map->poseRecords().size());
+	EXPECT_EQ(b->poseRecords()[123].logPosterior, m.map->poseRecords()[123].logPosterior);
+	EXPECT_EQ(b->asString(), m.map->asString());
+}
+
+// Lasting mode: a copy (as a particle filter makes) and a deserialized map continue exactly
+// as the original; another seed gives another state.
+TEST(CHierarchicalObjectMap, LastingCopiesAndReloadsContinueIdentically)
 {
 	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/paper_arena/default.rawlog");
 	CHierarchicalObjectMap a, c;
+	c.insertionOptions.seed = 99;
+	for (size_t i = 0; i < 120; i++)
+	{
+		const mrpt::poses::CPose3D p(rawlog.sweeps[i].robotPose);
+		a.insertObservation(*rawlog.sweeps[i].obs, p);
+		c.insertObservation(*rawlog.sweeps[i].obs, p);
+	}
+	CHierarchicalObjectMap b = a;
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << a;
+	buf.Seek(0);
+	auto d = std::dynamic_pointer_cast<CHierarchicalObjectMap>(arch.ReadObject());
+	ASSERT_TRUE(d);
+	EXPECT_EQ(fingerprint(*d), fingerprint(a));
+	for (size_t i = 120; i < 240; i++)
+	{
+		const mrpt::poses::CPose3D p(rawlog.sweeps[i].robotPose);
+		for (auto* m : {&a, &b, d.get(), &c}) m->insertObservation(*rawlog.sweeps[i].obs, p);
+	}
+	EXPECT_EQ(fingerprint(b), fingerprint(a));
+	EXPECT_EQ(fingerprint(*d), fingerprint(a));
+	EXPECT_NE(fingerprint(c), fingerprint(a));
+	a.clear();
+	EXPECT_TRUE(a.isEmpty());
+}
+
+TEST(CHierarchicalObjectMap, PerPoseSameSeedSameMapAndCopiesContinueIdentically)
+{
+	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/paper_arena/default.rawlog");
+	CHierarchicalObjectMap a, c;
+	a.insertionOptions.mode = c.insertionOptions.mode = TMode::PerPose;
 	c.insertionOptions.seed = 99;
 	for (size_t i = 0; i < 100; i++)
 	{

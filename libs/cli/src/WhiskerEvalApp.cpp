@@ -69,7 +69,7 @@ int WhiskerEvalApp::main(int argc, char** argv)
 	app.add_option(
 		   "-m,--map", o.map,
 		   "Consolidated map CSV written by whisker-map (map_tables.csv: id,x,y,yaw_deg,length,"
-		   "width,leg_width,texture,existence,support)")
+		   "width,leg_width,texture,existence,contacts,legs): scored as written")
 		->required();
 	app.add_option(
 		"--per-pose", o.perPose,

@@ -452,9 +452,10 @@ class Search
 		branch(m_full, value);
 		m_result.configurationsScored++;
 		if (m_localBest == m_best) return;  // nothing better than the best so far
-		const double lp = build();
+		double lp = build();
 		m_result.boardsScored++;
 		if (std::abs(lp - m_localBest) > 1e-6) m_result.certified = false;
+		lp = polishLegs(lp);
 		if (lp > m_best)
 		{
 			m_best = lp;
@@ -594,6 +595,25 @@ class Search
 			m_bb.addLeg(l);
 		}
 		return model::logJoint(m_bb);
+	}
+
+	/** Compass search of each leg's pose of the rebuilt board on its exact local log-odds
+	 *  (eq. 20): eq. 7 counts the distance past a face's end, which the options' closed-form
+	 *  poses do not see. Returns the board's logJoint after it. */
+	double polishLegs(double lp)
+	{
+		for (model::Id l = 0; l < m_bb.legIdBound(); l++)
+		{
+			Leg leg = m_bb.leg(l);
+			const double start = model::logOddsLeg(m_bb, l);
+			const double best = compassSearch(leg, m_p.leg_width, start, 1e-12, [&](const Leg& c) {
+				m_bb.setLeg(l, c);
+				return model::logOddsLeg(m_bb, l);
+			});
+			m_bb.setLeg(l, leg);
+			lp += best - start;
+		}
+		return lp;
 	}
 
 	const ModelParams& m_p;

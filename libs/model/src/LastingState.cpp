@@ -174,40 +174,45 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 				contextLegs.push_back(l);
 		});
 	}
-	std::sort(out.tables.begin(), out.tables.end());
-	std::sort(out.legs.begin(), out.legs.end());
-	std::sort(out.contacts.begin(), out.contacts.end());
-	std::sort(contextTables.begin(), contextTables.end());
-	std::sort(contextLegs.begin(), contextLegs.end());
+	// Board order from the content alone (positions; contacts by age), never from store ids:
+	// a copied or reloaded state then continues exactly as the original.
+	const auto byPose = [](const auto& items) {
+		return [&items](Id a, Id b) {
+			const auto &p = items[a], &q = items[b];
+			return p.x != q.x ? p.x < q.x : p.y != q.y ? p.y < q.y : p.theta < q.theta;
+		};
+	};
+	std::sort(out.tables.begin(), out.tables.end(), byPose(m_tables));
+	std::sort(out.legs.begin(), out.legs.end(), byPose(m_legs));
+	std::sort(out.contacts.begin(), out.contacts.end(), [&](Id a, Id b) { return m_contacts[a].seq < m_contacts[b].seq; });
+	std::sort(contextTables.begin(), contextTables.end(), byPose(m_tables));
+	std::sort(contextLegs.begin(), contextLegs.end(), byPose(m_legs));
 
-	// The board: store id -> board id through the (now unused) mark slots' positions.
+	// The board; m_tableBoard and m_legBoard map store ids to board ids for this extraction.
 	std::vector<obs::Shapelet> shapelets;
 	shapelets.reserve(out.contacts.size());
 	for (const Id c : out.contacts) shapelets.push_back(m_contacts[c].shapelet);
 	Blackboard& bb = out.board;
 	bb.reset(shapelets);
-	auto boardIndex = [](const std::vector<Id>& ids, Id storeId) {
-		return static_cast<Id>(std::lower_bound(ids.begin(), ids.end(), storeId) - ids.begin());
-	};
-	for (const Id t : out.tables) bb.addTable(m_tables[t]);
+	growTo(m_tableBoard, m_tables.capacity(), NONE);
+	growTo(m_legBoard, m_legs.capacity(), NONE);
+	for (const Id t : out.tables) m_tableBoard[static_cast<size_t>(t)] = bb.addTable(m_tables[t]);
 	for (const Id l : out.legs)
 	{
 		Leg leg = m_legs[l];
-		leg.parent = leg.parent == NONE ? NONE : boardIndex(out.tables, leg.parent);
-		bb.addLeg(leg, m_evidence[l]);
+		leg.parent = leg.parent == NONE ? NONE : m_tableBoard[static_cast<size_t>(leg.parent)];
+		m_legBoard[static_cast<size_t>(l)] = bb.addLeg(leg, m_evidence[l]);
 	}
 	for (size_t i = 0; i < out.contacts.size(); i++)
 	{
 		const Id l = m_contacts[out.contacts[i]].leg;
-		if (l != NONE) bb.setShapeletParent(i, boardIndex(out.legs, l));
+		if (l != NONE) bb.setShapeletParent(i, m_legBoard[static_cast<size_t>(l)]);
 	}
 	// Dormant: everything but the visited legs and tables.
-	std::sort(visitLegs.begin(), visitLegs.end());
-	std::sort(visitTables.begin(), visitTables.end());
-	for (size_t i = 0; i < out.tables.size(); i++)
-		bb.setTableDormant(static_cast<Id>(i), !std::binary_search(visitTables.begin(), visitTables.end(), out.tables[i]));
-	for (size_t i = 0; i < out.legs.size(); i++)
-		bb.setLegDormant(static_cast<Id>(i), !std::binary_search(visitLegs.begin(), visitLegs.end(), out.legs[i]));
+	for (size_t i = 0; i < out.tables.size(); i++) bb.setTableDormant(static_cast<Id>(i), true);
+	for (size_t i = 0; i < out.legs.size(); i++) bb.setLegDormant(static_cast<Id>(i), true);
+	for (const Id t : visitTables) bb.setTableDormant(m_tableBoard[static_cast<size_t>(t)], false);
+	for (const Id l : visitLegs) bb.setLegDormant(m_legBoard[static_cast<size_t>(l)], false);
 	for (const Id t : contextTables) bb.addContextTable(m_tables[t]);
 	for (const Id l : contextLegs) bb.addContextLeg(m_legs[l]);
 }

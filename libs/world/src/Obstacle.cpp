@@ -55,4 +55,13 @@ bool Obstacle::intersects(const Obstacle& other) const
 	};
 	return !separates(*this, other) && !separates(other, *this);
 }
+
+double Obstacle::gap(const Obstacle& other) const
+{
+	if (intersects(other)) return 0.0;
+	double best = INFINITY;
+	for (const auto& c : corners) best = std::min(best, other.distance(c));
+	for (const auto& c : other.corners) best = std::min(best, distance(c));
+	return best;
+}
 }  // namespace whiskermap::world

@@ -3,6 +3,7 @@
 #include <whiskermap/world/Trajectory.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -44,5 +45,21 @@ std::vector<mrpt::poses::CPose2D> Trajectory::readPathFile(const std::string& pa
 	}
 	if (poses.empty()) throw core::Error(path + ": path file holds no poses");
 	return poses;
+}
+
+void Trajectory::writePathFile(
+	const std::string& path, const std::vector<mrpt::poses::CPose2D>& poses, const std::string& comment)
+{
+	std::ofstream f(path);
+	if (!f) throw core::Error(path + ": cannot write path file");
+	std::istringstream lines(comment);
+	for (std::string line; std::getline(lines, line);) f << "# " << line << "\n";
+	char buf[128];
+	for (const auto& p : poses)
+	{
+		std::snprintf(buf, sizeof(buf), "%.10g %.10g %.10g\n", p.x(), p.y(), core::rad2deg(p.phi()));
+		f << buf;
+	}
+	if (!f) throw core::Error(path + ": write failed");
 }
 }  // namespace whiskermap::world

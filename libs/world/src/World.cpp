@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 namespace whiskermap::world
 {
@@ -70,15 +71,17 @@ World World::load(const std::string& path)
 	return w;
 }
 
-void World::save(const std::string& path) const
+void World::save(const std::string& path, const std::string& comment) const
 {
 	std::ofstream f(path);
 	if (!f) throw Error(path + ": cannot write file");
+	f << "; whiskermap world (format: doc/formats.md)\n";
+	std::istringstream lines(comment);
+	for (std::string line; std::getline(lines, line);) f << "; " << line << "\n";
 	char buf[512];
 	std::snprintf(
 		buf, sizeof(buf),
-		"; whiskermap world (format: doc/formats.md)\n[arena]\nx_min=%.10g\nx_max=%.10g\n"
-		"y_min=%.10g\ny_max=%.10g\nwall_texture=%.10g\n",
+		"[arena]\nx_min=%.10g\nx_max=%.10g\ny_min=%.10g\ny_max=%.10g\nwall_texture=%.10g\n",
 		x_min, x_max, y_min, y_max, wall_texture);
 	f << buf;
 	for (size_t i = 0; i < tables.size(); i++)

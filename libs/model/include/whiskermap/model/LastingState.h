@@ -53,7 +53,9 @@ class LastingState
 	Id addContact(const obs::Shapelet& s);
 
 	/** Fills `out` with the local problem around the contacts `around` (store ids), scored
-	 *  with `model`. Board ids ascend with store ids, so runs are reproducible. */
+	 *  with `model`. Board order depends on the content only (tables and legs by position,
+	 *  contacts by age), not on store ids: equal states, however built (a copy, a reload),
+	 *  give equal boards. */
 	void extract(const std::vector<Id>& around, const Radii& radii, const ModelParams& model, Region& out);
 
 	/** Replaces the region's tables and legs by the live hypotheses of `solved` (a board
@@ -120,5 +122,6 @@ class LastingState
 	uint64_t m_seq = 0;
 	uint32_t m_epoch = 0;
 	std::vector<uint32_t> m_tableMark, m_legMark, m_contactMark;
+	std::vector<Id> m_tableBoard, m_legBoard;  ///< store id -> board id, for the last extraction
 };
 }  // namespace whiskermap::model

@@ -27,5 +27,9 @@ struct Obstacle
 
 	/** True when the two solids share any point (separating-axis test). */
 	bool intersects(const Obstacle& other) const;
+
+	/** Gap between the two solids: the shortest distance between them, 0 when they touch or
+	 *  overlap (between disjoint convex solids it is reached at a corner of one of them). */
+	double gap(const Obstacle& other) const;
 };
 }  // namespace whiskermap::world

@@ -20,5 +20,10 @@ struct Trajectory
 	/** A path file: one pose per line, `x y yaw_deg` (metres, degrees); blank lines and lines
 	 *  starting with '%' or '#' are skipped. Throws core::Error naming file and line. */
 	static std::vector<mrpt::poses::CPose2D> readPathFile(const std::string& path);
+	/** Writes a path file that readPathFile reads back to the same poses (to 1e-9 m and
+	 *  degrees); each line of `comment` becomes a `# ` line at the top. Throws core::Error. */
+	static void writePathFile(
+		const std::string& path, const std::vector<mrpt::poses::CPose2D>& poses,
+		const std::string& comment = "");
 };
 }  // namespace whiskermap::world

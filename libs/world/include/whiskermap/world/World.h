@@ -18,8 +18,9 @@ struct World
 	/** Reads and validates a world .ini. Unknown sections or keys, missing keys, bad values,
 	 *  tables outside the arena or overlapping are core::Error naming file, section and key. */
 	static World load(const std::string& path);
-	/** Writes the world in the same .ini format (it loads back to the same values). */
-	void save(const std::string& path) const;
+	/** Writes the world in the same .ini format (it loads back to the same values); each
+	 *  line of `comment`, if any, becomes a `; ` comment line under the header. */
+	void save(const std::string& path, const std::string& comment = "") const;
 
 	/** This world repeated nx times along x and ny times along y (same table density): the
 	 *  scaling benchmarks' worlds of 6, 60 and 600 tables. */

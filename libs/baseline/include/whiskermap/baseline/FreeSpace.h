@@ -1,0 +1,39 @@
+#pragma once
+#include <Eigen/Core>
+#include <whiskermap/obs/RawlogReader.h>
+
+#include <map>
+#include <vector>
+
+namespace whiskermap::baseline
+{
+/** Negative evidence: the regions the whiskers swept without touching anything. In one whisk
+ *  a whisker's shaft turns from its start angle to where it stopped (its contact, or the end
+ *  of the sweep), so the circular sector it covered holds no obstacle. The angles come from
+ *  the actuator, not the noisy radial reading, so the sectors are exact. */
+class FreeSpace
+{
+   public:
+	explicit FreeSpace(const std::vector<obs::RawlogReader::Sweep>& sweeps);
+
+	/** How deep a point lies inside the swept region, metres: the largest, over the sectors
+	 *  holding it, of its distance to the sector's boundary (0 when no sector holds it). A
+	 *  square leg with half-diagonal d centred at `p` was swept through when this exceeds d. */
+	double depth(const Eigen::Vector2d& p) const;
+
+	size_t sectors() const { return m_sectors.size(); }
+
+   private:
+	struct Sector
+	{
+		Eigen::Vector2d pivot;
+		double radius, from, span;  ///< counter-clockwise from `from` through `span` radians
+	};
+	using Cell = std::pair<long, long>;
+	Cell cell(const Eigen::Vector2d& p) const;
+
+	std::vector<Sector> m_sectors;
+	std::map<Cell, std::vector<size_t>> m_grid;  ///< sectors whose bounding box meets each cell
+	double m_cell = 0.5;
+};
+}  // namespace whiskermap::baseline
