@@ -29,37 +29,52 @@ bool same(const Table& a, const Table& b, const model::ModelParams& p)
 
 std::vector<double> TableExistence::of(const model::Blackboard& bb)
 {
-	const model::ModelParams& p = bb.params();
 	std::vector<double> out(static_cast<size_t>(bb.tableIdBound()), 0.0);
 	for (Id t = 0; t < bb.tableIdBound(); t++)
-	{
-		if (!bb.hasTable(t)) continue;
-		m_without = bb;  // reuses the scratch board's storage
-		const double sT = -removeTableAndOrphans(m_without, t, m_orphans);
-		// Rivals: pair tables through the legs of t that explain contacts, each scored on the
-		// board without t and then taken off it again.
-		double rivals = 0;  // sum of exp(s_R - s_T)
-		m_scored.assign(1, bb.table(t));
-		for (const Id l : bb.legsOf(t))
-		{
-			if (!bb.explains(l)) continue;
-			m_rivals.clear();
-			tablesForPairs(m_without, l, m_rivals);
-			for (const Table& r : m_rivals)
-			{
-				// The rival as it settles on the legs it adopts; counted once, and never when it
-				// settles on t itself.
-				Table settled = r;
-				const double sR = scoreRival(m_without, settled, l);
-				if (std::any_of(m_scored.begin(), m_scored.end(), [&](const Table& s) { return same(s, settled, p); }))
-					continue;
-				m_scored.push_back(settled);
-				rivals += std::exp(std::min(sR - sT, 700.0));
-			}
-		}
-		out[static_cast<size_t>(t)] = 1 / (1 + std::exp(std::min(-sT, 700.0)) + rivals);
-	}
+		if (bb.hasTable(t)) out[static_cast<size_t>(t)] = of(bb, t);
 	return out;
+}
+
+double TableExistence::of(const model::Blackboard& bb, Id t)
+{
+	const model::ModelParams& p = bb.params();
+	m_without = bb;  // reuses the scratch board's storage
+	const double sT = -removeTableAndOrphans(m_without, t, m_orphans);
+	// Rivals: pair tables through the legs of t that explain contacts, each scored on the
+	// board without t and then taken off it again.
+	double rivals = 0;  // sum of exp(s_R - s_T)
+	m_scored.assign(1, bb.table(t));
+	for (const Id l : bb.legsOf(t))
+	{
+		if (!bb.explains(l)) continue;
+		m_rivals.clear();
+		tablesForPairs(m_without, l, m_rivals);
+		for (const Table& r : m_rivals)
+		{
+			// A rival that cannot come within 20 nats of t (its best case with l and the legs
+			// it adopts) changes P(t) by less than 2e-9: not scored.
+			if (bound(p, adoptable(m_without, r, l, m_adopted) + 1) < sT - 20) continue;
+			// The rival as it settles on the legs it adopts; counted once, and never when it
+			// settles on t itself.
+			Table settled = r;
+			const double sR = scoreRival(m_without, settled, l);
+			if (std::any_of(m_scored.begin(), m_scored.end(), [&](const Table& s) { return same(s, settled, p); }))
+				continue;
+			m_scored.push_back(settled);
+			rivals += std::exp(std::min(sR - sT, 700.0));
+		}
+	}
+	return 1 / (1 + std::exp(std::min(-sT, 700.0)) + rivals);
+}
+
+double TableExistence::bound(const model::ModelParams& p, size_t legs)
+{
+	// eq. 20 of a table with `legs` legs each at its corner exactly (eqs. 5-6, 8), and the
+	// best of a missing leg (eq. 15) or an invented one at each other corner.
+	const double k = static_cast<double>(std::min<size_t>(legs, 4));
+	const double linked = std::log(p.alpha_L + p.c_L) - model::logLegNull(p);
+	const double other = std::max(std::log(p.epsilon), model::logCell(std::log(p.alpha_L + p.c_L), p));
+	return model::logCell(model::logTablePrior(p), p) + k * linked + (4 - k) * other;
 }
 
 double TableExistence::scoreRival(model::Blackboard& bb, Table& t, Id leg)

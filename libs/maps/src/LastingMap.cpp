@@ -4,6 +4,47 @@
 
 namespace whiskermap::maps
 {
+namespace
+{
+bool sameLeg(const model::Blackboard& a, const model::Blackboard& b, model::Id l)
+{
+	const model::Leg &p = a.leg(l), &q = b.leg(l);
+	return p.x == q.x && p.y == q.y && p.theta == q.theta && p.parent == q.parent &&
+		   a.evidence(l).count() == b.evidence(l).count() && a.shapeletsOf(l) == b.shapeletsOf(l);
+}
+}  // namespace
+
+std::vector<double> LastingMap::existence(
+	const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model)
+{
+	// Where legs changed (came, went, moved, relinked, gained contacts): a table's existence
+	// depends on its own legs and on the legs that could pair with them (TableExistence), so
+	// only tables within a pair's reach of a change are scored again; the rest keep theirs.
+	std::vector<std::pair<double, double>> changed;
+	const model::Id bound = std::max(start.legIdBound(), solved.legIdBound());
+	for (model::Id l = 0; l < bound; l++)
+	{
+		const bool was = start.hasLeg(l), is = solved.hasLeg(l);
+		if (was && is && sameLeg(start, solved, l)) continue;
+		if (was) changed.emplace_back(start.leg(l).x, start.leg(l).y);
+		if (is) changed.emplace_back(solved.leg(l).x, solved.leg(l).y);
+	}
+	const double reach = std::hypot(model.table_length, model.table_width) + 3 * model.parent_gate;
+	std::vector<double> out(static_cast<size_t>(solved.tableIdBound()), 0.0);
+	for (model::Id t = 0; t < solved.tableIdBound(); t++)
+	{
+		if (!solved.hasTable(t)) continue;
+		bool same = t < static_cast<model::Id>(m_region->tables.size()) && start.hasTable(t) &&
+					start.legsOf(t) == solved.legsOf(t) && start.table(t).x == solved.table(t).x &&
+					start.table(t).y == solved.table(t).y && start.table(t).theta == solved.table(t).theta;
+		for (const model::Id l : solved.legsOf(t))
+			for (const auto& [x, y] : changed)
+				same = same && std::hypot(x - solved.leg(l).x, y - solved.leg(l).y) > reach;
+		out[static_cast<size_t>(t)] = same ? m_state.existence(m_region->tables[static_cast<size_t>(t)]) : m_existence.of(solved, t);
+	}
+	return out;
+}
+
 LastingMap::TStats LastingMap::insert(
 	const std::vector<obs::Shapelet>& contacts, const model::ModelParams& model,
 	const inference::SamplerParams& sampler, uint64_t seed)
@@ -30,7 +71,7 @@ LastingMap::TStats LastingMap::insert(
 	const inference::StepResult result = m_sampler->anneal(board, seed);
 	const model::Blackboard& solved = m_sampler->best();
 
-	m_state.replace(*m_region, solved, m_existence.of(solved), m_newTables, m_newLegs);
+	m_state.replace(*m_region, solved, existence(board, solved, model), m_newTables, m_newLegs);
 	for (const model::Id l : m_newLegs)
 		if (l != model::NONE) m_state.fold(l, m_options.contacts_per_leg, model);
 	for (const model::Id c : m_new)

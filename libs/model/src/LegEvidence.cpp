@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace whiskermap::model
 {
@@ -86,12 +87,13 @@ double LegEvidence::logLikelihood(const Leg& l, const ModelParams& p) const
 	offset(l.theta, d, n);
 	const double gx = l.x - m_ax, gy = l.y - m_ay;
 	double delta = 0;
-	for (int k = 0; k < 4; k++)
+	// Face k's outward normal u turns by a quarter turn per face: (ux, uy) -> (-uy, ux).
+	double ux = std::cos(m_theta + d), uy = std::sin(m_theta + d);
+	for (int k = 0; k < 4; k++, std::swap(ux, uy), ux = -ux)
 	{
 		const Face& f = m_face[k];
 		if (f.w == 0) continue;
 		// sum w (u.e - t)^2 with t = u.g + h: the contacts' distances to the face line (eq. 7's r).
-		const double a = m_theta + d + k * M_PI_2, ux = std::cos(a), uy = std::sin(a);
 		const double t = ux * gx + uy * gy + halfExtent(l, k - n);
 		delta += ux * ux * f.sxx + 2 * ux * uy * f.sxy + uy * uy * f.syy - 2 * t * (ux * f.sx + uy * f.sy) + f.w * t * t;
 	}
@@ -108,11 +110,11 @@ void LegEvidence::addCentreEquations(
 	int n = 0;
 	offset(theta, d, n);
 	const double scale = sq(p.sigma_r);  // weights in units of the model's 1/sigma_r^2
-	for (int k = 0; k < 4; k++)
+	double ux = std::cos(m_theta + d), uy = std::sin(m_theta + d);
+	for (int k = 0; k < 4; k++, std::swap(ux, uy), ux = -ux)
 	{
 		const Face& f = m_face[k];
 		if (f.w == 0) continue;
-		const double a = m_theta + d + k * M_PI_2, ux = std::cos(a), uy = std::sin(a);
 		const double w = f.w * scale;
 		// world sum w u.s = u.(sum w e + w anchor)
 		const double us = scale * (ux * (f.sx + f.w * m_ax) + uy * (f.sy + f.w * m_ay));

@@ -19,8 +19,13 @@ class TableExistence
    public:
 	/** existence[t] for every live table t of `bb` (0 for unused ids). */
 	std::vector<double> of(const model::Blackboard& bb);
+	/** The existence of live table t of `bb`. */
+	double of(const model::Blackboard& bb, model::Id t);
 
    private:
+	/** An upper bound of the change of logJoint a table with `legs` supported legs can bring
+	 *  (each exactly at its corner; the other corners missing or invented, whichever costs less). */
+	static double bound(const model::ModelParams& p, size_t legs);
 	/** Change of logJoint when table `t` is added to `bb` with leg `leg` and the free legs it
 	 *  can reach, fitted to them (`t` leaves fitted), with invented legs at the empty corners
 	 *  that pay for themselves. `bb` is left as it was. */

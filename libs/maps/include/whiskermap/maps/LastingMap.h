@@ -63,6 +63,10 @@ class LastingMap
 	void clear() { m_state.clear(); }
 
    private:
+	/** Existence of each table of `solved` (grown from `start`, the region's board). */
+	std::vector<double> existence(
+		const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model);
+
 	model::LastingState m_state;
 	TOptions m_options;
 	// Reused across insertions (not copied: a copy rebuilds them).
