@@ -14,16 +14,15 @@ void SpatialHash::clear()
 	for (auto& b : m_buckets) b.clear();
 }
 
-size_t SpatialHash::bucket(int32_t ix, int32_t iy) const
+size_t SpatialHash::bucket(int64_t ix, int64_t iy) const
 {
-	const uint64_t h = static_cast<uint64_t>(static_cast<uint32_t>(ix)) * 73856093u ^
-					   static_cast<uint64_t>(static_cast<uint32_t>(iy)) * 19349663u;
+	const uint64_t h = static_cast<uint64_t>(ix) * 73856093u ^ static_cast<uint64_t>(iy) * 19349663u;
 	return static_cast<size_t>(h % m_buckets.size());
 }
 
 void SpatialHash::insert(Id id, double x, double y)
 {
-	const int32_t ix = cell(x), iy = cell(y);
+	const int64_t ix = cell(x), iy = cell(y);
 	m_buckets[bucket(ix, iy)].push_back({ix, iy, id});
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 #include <whiskermap/model/Id.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -24,10 +25,10 @@ class SpatialHash
 	template <class F>
 	void forEachNear(double x, double y, double radius, F&& f) const
 	{
-		const int32_t x0 = cell(x - radius), x1 = cell(x + radius);
-		const int32_t y0 = cell(y - radius), y1 = cell(y + radius);
-		for (int32_t ix = x0; ix <= x1; ix++)
-			for (int32_t iy = y0; iy <= y1; iy++)
+		const int64_t x0 = cell(x - radius), x1 = cell(x + radius);
+		const int64_t y0 = cell(y - radius), y1 = cell(y + radius);
+		for (int64_t ix = x0; ix <= x1; ix++)
+			for (int64_t iy = y0; iy <= y1; iy++)
 				for (const Entry& e : m_buckets[bucket(ix, iy)])
 					if (e.ix == ix && e.iy == iy) f(e.id);
 	}
@@ -35,11 +36,17 @@ class SpatialHash
    private:
 	struct Entry
 	{
-		int32_t ix, iy;
+		int64_t ix, iy;
 		Id id;
 	};
-	int32_t cell(double v) const { return static_cast<int32_t>(std::floor(v / m_cellSize)); }
-	size_t bucket(int32_t ix, int32_t iy) const;
+	/** 64-bit cell index, clamped to +-2^62 so that any finite coordinate has a cell and
+	 *  the query loops above always end (indices and their +1 never overflow). */
+	int64_t cell(double v) const
+	{
+		constexpr double LIM = 4.611686018427387904e18;  // 2^62
+		return static_cast<int64_t>(std::clamp(std::floor(v / m_cellSize), -LIM, LIM));
+	}
+	size_t bucket(int64_t ix, int64_t iy) const;
 
 	double m_cellSize;
 	std::vector<std::vector<Entry>> m_buckets;
