@@ -3,6 +3,7 @@
 #include <whiskermap/core/Error.h>
 #include <whiskermap/obs/CObservationWhiskerContacts.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -23,8 +24,25 @@ void writeWhisker(mrpt::serialization::CArchive& out, const TWhisker& w)
 }
 void readWhisker(mrpt::serialization::CArchive& in, TWhisker& w)
 {
-	in >> w.mount_x >> w.mount_y >> w.sweep_start >> w.sweep_end >> w.length >> w.touched >>
-		w.angle >> w.r >> w.normal >> w.texture;
+	in >> w.mount_x >> w.mount_y >> w.sweep_start >> w.sweep_end >> w.length;
+	const auto touched = in.ReadAs<uint8_t>();  // a bool byte other than 0 or 1 is refused
+	if (touched > 1) throw whiskermap::core::Error("CObservationWhiskerContacts: bool byte " + std::to_string(touched) + " is not 0 or 1");
+	w.touched = touched == 1;
+	in >> w.angle >> w.r >> w.normal >> w.texture;
+}
+/** The sensor label, its length bounded before anything is allocated. */
+std::string readLabel(mrpt::serialization::CArchive& in)
+{
+	const auto n = in.ReadAs<uint32_t>();
+	if (n > CObservationWhiskerContacts::MAX_LABEL)
+		throw whiskermap::core::Error(
+			"CObservationWhiskerContacts: stored sensor label length " + std::to_string(n) + " is not in [0, " +
+			std::to_string(CObservationWhiskerContacts::MAX_LABEL) + "]");
+	std::string s(n, '\0');
+	if (n) in.ReadBuffer(s.data(), n);
+	for (const char c : s)
+		if (c < 0x20 || c > 0x7e) throw whiskermap::core::Error("CObservationWhiskerContacts: sensor label holds a non-printable byte");
+	return s;
 }
 }  // namespace
 
@@ -45,7 +63,9 @@ void CObservationWhiskerContacts::serializeFrom(
 	{
 		case 0:
 		{
-			in >> timestamp >> sensorLabel >> sensorPose;
+			in >> timestamp;
+			sensorLabel = readLabel(in);
+			in >> sensorPose;
 			in >> noise.sigma_r >> noise.sigma_phi >> noise.sigma_tau;
 			const auto n = in.ReadAs<uint32_t>();
 			if (n == 0 || n > MAX_WHISKERS)
@@ -64,8 +84,11 @@ void CObservationWhiskerContacts::serializeFrom(
 
 void CObservationWhiskerContacts::validate() const
 {
-	const std::string who = "CObservationWhiskerContacts '" + sensorLabel + "'";
+	const bool printable = sensorLabel.size() <= MAX_LABEL &&
+		std::all_of(sensorLabel.begin(), sensorLabel.end(), [](char c) { return c >= 0x20 && c <= 0x7e; });
+	const std::string who = "CObservationWhiskerContacts" + (printable ? " '" + sensorLabel + "'" : std::string());
 	auto fail = [&](const std::string& what) { throw whiskermap::core::Error(who + ": " + what); };
+	if (!printable) fail("sensor label is longer than " + std::to_string(MAX_LABEL) + " characters or not printable ASCII");
 	if (whiskers.empty() || whiskers.size() > MAX_WHISKERS)
 		fail("whisker count " + std::to_string(whiskers.size()) + " is not in [1, " +
 			 std::to_string(MAX_WHISKERS) + "]");
