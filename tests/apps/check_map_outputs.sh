@@ -12,7 +12,7 @@ for f in per_pose_tables.csv map_tables.csv montage.png map.png map.3Dscene map.
 done
 [[ "$(head -1 "$work/a/per_pose_tables.csv")" == "pose,x,y,yaw_deg,length,width,leg_width,texture,log_posterior" ]] || { echo "FAIL: per_pose header"; exit 1; }
 [[ "$(head -1 "$work/a/map_tables.csv")" == "id,x,y,yaw_deg,length,width,leg_width,texture,existence,support" ]] || { echo "FAIL: map header"; exit 1; }
-for key in '"poses": 400' '"shapelets":' '"tables_per_pose":' '"moves":' '"priming":' '"time_per_pose_ms": {"median":' '"p95":'; do
+for key in '"poses": 400' '"shapelets":' '"tables_per_pose":' '"moves":' '"priming":' '"time_per_pose_ms":' '"median":' '"p95":'; do
   grep -q -- "$key" "$work/a/summary.json" || { echo "FAIL: summary.json lacks $key"; cat "$work/a/summary.json"; exit 1; }
 done
 [[ -z "$(ls -A "$work/a" | grep staging || true)" ]] || { echo "FAIL: staging folder left"; exit 1; }
