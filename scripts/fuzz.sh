@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (fuzz/, clang with ASan + UBSan) in BUILD_DIR (default
+# Builds the libFuzzer targets (fuzz/, clang with ASan + UBSan) in FUZZ_BUILD_DIR (default
 # build-fuzz) and runs them one after the other on one core (doc/reliability.md).
 # Usage: scripts/fuzz.sh [--seconds S | --runs N] [TARGET...]
 #   --seconds S  fuzz each target for S seconds (the test command's short form uses 30)
@@ -7,11 +7,11 @@
 #   TARGET       rawlog observation world_ini robot_ini noise_ini map_ini path_file table_csv
 #                (default: all)
 # Each target starts from its seed corpus fuzz/corpus/<target>/ plus what earlier runs
-# found (BUILD_DIR/corpus/<target>/); a crash, leak, hang (>10 s) or out-of-memory (>2 GiB)
-# stops the script with the reproducer saved as BUILD_DIR/<crash|leak|timeout|oom>-*.
+# found (FUZZ_BUILD_DIR/corpus/<target>/); a crash, leak, hang (>10 s) or out-of-memory (>2 GiB)
+# stops the script with the reproducer saved as FUZZ_BUILD_DIR/<crash|leak|timeout|oom>-*.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build=${BUILD_DIR:-$root/build-fuzz}
+build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 limit=(-max_total_time=30)
 all=(rawlog observation world_ini robot_ini noise_ini map_ini path_file table_csv)
 targets=()

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer, then every fuzz
-# target for a while (doc/reliability.md). One clang build (BUILD_DIR, default build-fuzz)
+# target for a while (doc/reliability.md). One clang build (SANITIZE_BUILD_DIR, default build-fuzz)
 # serves both: every library, app and test is instrumented (ASan, UBSan, libFuzzer coverage),
 # and fuzz/ holds libFuzzer binaries. Stock tools that load our instrumented libraries
 # (rawlog-edit -p, pf-localization by LD_PRELOAD) get the sanitizer runtime preloaded first.
 # Usage: scripts/sanitize-tests.sh [--fuzz-seconds S]   (default 30 per target; 0: no fuzzing)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build=${BUILD_DIR:-$root/build-fuzz}
+build=${SANITIZE_BUILD_DIR:-$root/build-fuzz}
 seconds=30
 [[ "${1:-}" == "--fuzz-seconds" ]] && seconds=$2
 
@@ -25,4 +25,4 @@ export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:detect_stack_use_after_retur
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 (cd "$build" && ctest --output-on-failure -j "${JOBS:-2}")
 
-[[ "$seconds" == 0 ]] || BUILD_DIR=$build "$root/scripts/fuzz.sh" --seconds "$seconds"
+[[ "$seconds" == 0 ]] || FUZZ_BUILD_DIR=$build "$root/scripts/fuzz.sh" --seconds "$seconds"
