@@ -26,13 +26,18 @@ echo "ok: failures change nothing"
 
 # Terminated mid-run: the folder is as it was; killed outright: the next run cleans up.
 "$sim" -q -w "$world" --repeat 20 -o "$work/long.rawlog"   # 8000 sweeps: a run of many seconds
+# Waits (up to 5 minutes: sanitizer builds are slow) until a run has staged its outputs.
+staged() {
+  for _ in $(seq 1500); do ls -A "$work/out" | grep -q staging && return 0; sleep 0.2; done
+  echo "FAIL: the run never staged its outputs"; exit 1
+}
 for sig in TERM INT; do
   "$map" -q -i "$work/long.rawlog" --world "$world" -o "$work/out" & pid=$!
-  sleep 2; kill -"$sig" "$pid"; wait "$pid" && { echo "FAIL: SIG$sig run exited 0"; exit 1; } || true
+  staged; sleep 1; kill -"$sig" "$pid"; wait "$pid" && { echo "FAIL: SIG$sig run exited 0"; exit 1; } || true
   unchanged "SIG$sig"
 done
 "$map" -q -i "$work/long.rawlog" -o "$work/out" & pid=$!
-sleep 2; kill -KILL "$pid"; wait "$pid" || true
+staged; sleep 1; kill -KILL "$pid"; wait "$pid" || true
 ls -A "$work/out" | grep -q staging || { echo "FAIL: expected the killed run's staging folder"; exit 1; }
 cp "$data" "$work/in\"quote.rawlog"
 "$map" -q -i "$work/in\"quote.rawlog" -o "$work/out"
