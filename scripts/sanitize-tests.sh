@@ -18,6 +18,7 @@ cmake --build "$build" -j "${JOBS:-2}"
 runtime=$(clang++ -print-file-name=libclang_rt.asan-x86_64.so)
 [[ -f "$runtime" ]] || { echo "sanitize-tests: no $runtime (scripts/install-deps.sh installs libclang-rt-14-dev)"; exit 1; }
 export WHISKERMAP_TOOL_PRELOAD=$runtime
+export WHISKERMAP_TOOL_TIMEOUT=1200  # stock tools on instrumented libraries run ~10x slower
 export WHISKERMAP_CONSUMER_CMAKE_ARGS="-DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS=-fsanitize=address,undefined -DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined"
 # Leak checking is off: MRPT and OctoMap keep static registries alive to exit. Everything
 # else (heap errors, UB) aborts the test.

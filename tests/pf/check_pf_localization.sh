@@ -63,7 +63,7 @@ run_pf() {
   local dir=$1 libs=$2 code=0
   # In a sanitizer build the sanitizer runtime comes first (scripts/sanitize-tests.sh).
   (cd "$dir" && WHISKERMAP_PF_SEED=$pf_seed LD_PRELOAD="${WHISKERMAP_TOOL_PRELOAD:+$WHISKERMAP_TOOL_PRELOAD:}$libs" \
-     timeout 120 pf-localization "$ini" "$rawlog" </dev/null >pf.log 2>&1) || code=$?
+     timeout "${WHISKERMAP_TOOL_TIMEOUT:-120}" pf-localization "$ini" "$rawlog" </dev/null >pf.log 2>&1) || code=$?
   if [[ $code -ne 0 ]]; then
     tail -20 "$dir/pf.log"; echo "FAIL: pf-localization exited $code (log: $dir/pf.log)"; exit 1
   fi
