@@ -13,10 +13,12 @@ using whiskermap::obs::CObservationWhiskerContacts;
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
 	static const char name[] = "whiskermap::obs::CObservationWhiskerContacts";
-	std::vector<uint8_t> bytes{static_cast<uint8_t>(0x80 | (sizeof(name) - 1))};
-	bytes.insert(bytes.end(), name, name + sizeof(name) - 1);
-	bytes.push_back(0);  // version
-	bytes.insert(bytes.end(), data, data + size);
+	constexpr size_t n = sizeof(name) - 1;
+	std::vector<uint8_t> bytes(n + 2 + size);
+	bytes[0] = static_cast<uint8_t>(0x80 | n);
+	std::memcpy(&bytes[1], name, n);
+	bytes[n + 1] = 0;  // version
+	if (size) std::memcpy(&bytes[n + 2], data, size);
 	mrpt::io::CMemoryStream m;
 	m.assignMemoryNotOwn(bytes.data(), bytes.size());
 	auto arch = mrpt::serialization::archiveFrom(m);
