@@ -7,7 +7,8 @@
 set -euo pipefail
 
 build_pkgs=(cmake g++ make pkg-config libmrpt-maps-dev libmrpt-slam-dev
-            libeigen3-dev liboctomap-dev libgtest-dev libbenchmark-dev libcli11-dev)
+            libeigen3-dev liboctomap-dev libgtest-dev libbenchmark-dev libcli11-dev
+            nlohmann-json3-dev clang libclang-rt-14-dev)
 tool_pkgs=(mrpt-apps octomap-tools python3)
 
 want=("${build_pkgs[@]}")

@@ -21,7 +21,7 @@ head -c 30000 "$data" > "$work/truncated.rawlog"
 "$expect_error" "paper_arena.ini: corrupt rawlog" "$base" -i "$world" -o "$work/out"
 "$expect_error" "paper_arena.ini: not a whisker-map configuration" "$base" -i "$data" -c "$world" -o "$work/out"
 printf '[MetricMap]\nhierarchicalObjectMap_count=1\n[MetricMap_hierarchicalObjectMap_00_model]\ntable_length=1\n' > "$work/short.ini"
-"$expect_error" "short.ini: \[MetricMap_hierarchicalObjectMap_00_model\] .*missing required key" "$base" -i "$data" -c "$work/short.ini" -o "$work/out"
+"$expect_error" "short.ini: line [0-9]*: \[MetricMap_hierarchicalObjectMap_00_model\] .*missing required key" "$base" -i "$data" -c "$work/short.ini" -o "$work/out"
 "$expect_error" "leg-width must be smaller" "$base" -i "$data" --leg-width 0.8 -o "$work/out"
 "$expect_error" "cannot create output folder" "$base" -i "$data" -o /proc/whiskermap-nowhere
 [[ "$(ls -A "$work/out")" == "map_tables.csv" ]] || { echo "FAIL: output folder changed:"; ls -A "$work/out"; exit 1; }

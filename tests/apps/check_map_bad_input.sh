@@ -14,7 +14,7 @@ head -c 30000 "$data" > "$work/truncated.rawlog"
 rawlog-edit --remove-label WHISKERS -i "$data" -o "$work/odometry_only.rawlog" >/dev/null 2>&1 </dev/null
 "$expect_error" "odometry_only.rawlog: holds no whisker observations" "$map" -i "$work/odometry_only.rawlog" -o "$work/out"
 printf '[MetricMap]\nhierarchicalObjectMap_count=1\n[MetricMap_hierarchicalObjectMap_00_insertOpts]\nmemory=7\n' > "$work/bad.ini"
-"$expect_error" "bad.ini: \[MetricMap_hierarchicalObjectMap_00_insertOpts\] memory: unknown key" "$map" -i "$data" -c "$work/bad.ini" -o "$work/out"
+"$expect_error" "bad.ini: line 4: \[MetricMap_hierarchicalObjectMap_00_insertOpts\] memory: unknown key" "$map" -i "$data" -c "$work/bad.ini" -o "$work/out"
 "$expect_error" "snapshot-temperature 99" "$map" -i "$data" -o "$work/out" --mode per_pose --snapshot-pose 1 --snapshot-temperature 99
 "$expect_error" "snapshot-pose draws a per-pose blackboard: it needs --mode per_pose" "$map" -i "$data" -o "$work/out" --snapshot-pose 1
 [[ "$(ls -A "$work/out")" == "map_tables.csv" ]] || { echo "FAIL: output folder changed:"; ls -A "$work/out"; exit 1; }

@@ -5,7 +5,8 @@
 set -euo pipefail
 plugin=$1 rawlog=$2 expected=$3
 command -v rawlog-edit >/dev/null || { echo "rawlog-edit not installed (scripts/install-deps.sh --tools)"; exit 1; }
-out=$(rawlog-edit -p "$plugin" --info -i "$rawlog" 2>&1 </dev/null)
+# In a sanitizer build the plugin needs the sanitizer runtime preloaded (scripts/sanitize-tests.sh).
+out=$(LD_PRELOAD="${WHISKERMAP_TOOL_PRELOAD:-}" rawlog-edit -p "$plugin" --info -i "$rawlog" 2>&1 </dev/null)
 if grep -q "not registered" <<<"$out"; then echo "$out"; exit 1; fi
 n=$(sed -n 's/^Overall number of objects *: *\([0-9]*\).*/\1/p' <<<"$out")
 [[ "$n" == "$expected" ]] || { echo "$out"; echo "FAIL: read $n objects, expected $expected"; exit 1; }

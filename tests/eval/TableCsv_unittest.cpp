@@ -122,3 +122,23 @@ TEST_F(TableCsvTest, PerPoseErrors)
 	// A map CSV is not a per-pose CSV.
 	EXPECT_THROW(TableCsv::readPerPose(write("map.csv", MAP_HEAD), 3), core::Error);
 }
+
+// Regression (issue 8): per-pose tables were read whole into one vector per pose (memory
+// grew with --poses, up to 1e9 vectors) and lines were unbounded.
+TEST_F(TableCsvTest, PerPoseRowsStreamInPoseOrderWithBoundedLines)
+{
+	const auto pp = write("order.csv", POSE_HEAD + "2,1,1,0,1,0.6,0.05,0.7,-1\n1,1,1,0,1,0.6,0.05,0.7,-1\n");
+	EXPECT_EQ(errorOf([&] { TableCsv::readPerPose(pp, 3); }),
+			  pp + ": line 3: pose 1 after pose 2 (rows must be in pose order, as whisker-map writes them)");
+	const auto big = write("big.csv", POSE_HEAD + "0,1,1,0,1,0.6,0.05,0.7,-1\n");
+	TableCsv::PerPoseReader r(big, 1000000000);  // no allocation per pose
+	std::vector<whiskermap::world::Table> tables;
+	ASSERT_TRUE(r.next(tables));
+	EXPECT_EQ(tables.size(), 1u);
+	ASSERT_TRUE(r.next(tables));
+	EXPECT_TRUE(tables.empty());
+	const auto longLine = write("long.csv", MAP_HEAD + std::string(100000, '1') + "\n");
+	EXPECT_EQ(errorOf([&] { TableCsv::readMap(longLine); }), longLine + ": line 2: longer than 4096 bytes");
+	const auto nul = write("nul.csv", MAP_HEAD + std::string("0,1,1,0,1,0.6,0.05,0.7,0.5,3\0\n", 30));
+	EXPECT_EQ(errorOf([&] { TableCsv::readMap(nul); }), nul + ": line 2: holds a control byte 0 (NUL)");
+}

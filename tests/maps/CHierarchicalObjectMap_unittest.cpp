@@ -134,7 +134,10 @@ TEST(CHierarchicalObjectMap, LastingMapHoldsEveryTableOfThePaperArena)
 	// Memory grows with objects: a leg keeps at most contacts_per_leg explicit contacts.
 	const auto& s = m.map->lastingMap().state();
 	for (model::Id l = 0; l < s.legIdBound(); l++)
-		if (s.hasLeg(l)) EXPECT_LE(s.contactsOf(l).size(), m.map->insertionOptions.lasting.contacts_per_leg);
+		if (s.hasLeg(l))
+		{
+			EXPECT_LE(s.contactsOf(l).size(), m.map->insertionOptions.lasting.contacts_per_leg);
+		}
 }
 
 // The paper's per-pose mode, as before: every table found at 3 or more poses.

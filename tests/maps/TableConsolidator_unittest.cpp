@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 #include <whiskermap/core/Angles.h>
+#include <whiskermap/obs/Shapelet.h>
 #include <whiskermap/maps/TableConsolidator.h>
 
 using namespace whiskermap;
@@ -58,4 +59,18 @@ TEST(TableConsolidator, ContactsOnALegWithoutTheTableLowerExistence)
 	EXPECT_EQ(c.objects()[0].support, 1u);
 	EXPECT_EQ(c.objects()[0].evidence, 2u);
 	EXPECT_DOUBLE_EQ(c.objects()[0].existence(), 0.5);
+}
+
+// Regression (issue 8): cells were 32-bit ints (a loop to INT_MAX never ended near
+// x = 2^31 m) and the cell key shifted a negative value left (undefined behaviour).
+TEST(TableConsolidator, FarAndNegativeCoordinatesMergeAndEnd)
+{
+	for (const double x : {-3.5, 2147483647.5, -2147483648.5, 4.3e9, 1e15, -1e300})
+	{
+		maps::TableConsolidator c;
+		c.addPose({table(x, -x, 0)}, {obs::Shapelet{x + 0.5, -x + 0.3, 0, 0.7, 0}});
+		c.addPose({table(x, -x, 0)}, {});
+		ASSERT_EQ(c.objects().size(), 1u) << x;
+		EXPECT_EQ(c.objects()[0].support, 2u) << x;
+	}
 }

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 
 using whiskermap::obs::CObservationWhiskerContacts;
 using whiskermap::obs::TWhisker;
@@ -189,4 +190,39 @@ TEST(CObservationWhiskerContacts, ExportTxtHasOneColumnPerHeaderName)
 	while (r >> w) nr++;
 	EXPECT_EQ(nh, 10u);
 	EXPECT_EQ(nr, nh);
+}
+
+// Regression (issue 8): the stored label's length was trusted (a 4 KB file took 4 GB) and a
+// bool byte other than 0/1 loaded as an invalid bool. Read by MRPT's own ReadObject, as
+// stock tools given our plugin do.
+TEST(CObservationWhiskerContacts, StoredLengthsAndBoolsAreCheckedBeforeUse)
+{
+	mrpt::io::CMemoryStream m;
+	mrpt::serialization::archiveFrom(m) << sample();
+	std::vector<uint8_t> good(static_cast<const uint8_t*>(m.getRawBufferData()),
+							  static_cast<const uint8_t*>(m.getRawBufferData()) + m.getTotalBytesCount());
+	const size_t header = 2 + std::strlen("whiskermap::obs::CObservationWhiskerContacts");
+	auto load = [](const std::vector<uint8_t>& bytes) -> std::string {
+		mrpt::io::CMemoryStream in;
+		in.assignMemoryNotOwn(bytes.data(), bytes.size());
+		try
+		{
+			CObservationWhiskerContacts o;
+			mrpt::serialization::archiveFrom(in).ReadObject(&o);
+		}
+		catch (const std::exception& e)
+		{
+			return e.what();
+		}
+		return "";
+	};
+	EXPECT_EQ(load(good), "");
+	auto label = good;
+	const uint32_t huge = 0xfffffff0u;
+	std::memcpy(&label[header + 8], &huge, 4);
+	EXPECT_NE(load(label).find("stored sensor label length 4294967280"), std::string::npos) << load(label);
+	auto touched = good;
+	const size_t whisker0 = header + 8 + 4 + 8 + 2 + std::strlen("mrpt::poses::CPose3D") + 96 + 1 + 24 + 4;
+	touched[whisker0 + 40] = 2;
+	EXPECT_NE(load(touched).find("bool byte 2 is not 0 or 1"), std::string::npos) << load(touched);
 }

@@ -5,8 +5,9 @@ set -euo pipefail
 build=$1 src=$2 work=$3
 rm -rf "$work"; mkdir -p "$work"
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
+# A sanitizer build's libraries need the consumer built the same way (scripts/sanitize-tests.sh).
 cmake -S "$src/tests/package/consumer" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
-      -DCMAKE_BUILD_TYPE=Release >/dev/null
+      -DCMAKE_BUILD_TYPE=Release ${WHISKERMAP_CONSUMER_CMAKE_ARGS:-} >/dev/null
 cmake --build "$work/build" >/dev/null
 out=$("$work/build/consumer" "$src/datasets/paper_arena/default.rawlog")
 echo "$out"

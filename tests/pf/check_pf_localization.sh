@@ -61,8 +61,9 @@ gt=$work/table_loop_ground_truth_robot_path.txt
 # Runs pf-localization in DIR (holding map.simplemap) with LD_PRELOAD=LIBS; log in DIR/pf.log.
 run_pf() {
   local dir=$1 libs=$2 code=0
-  (cd "$dir" && WHISKERMAP_PF_SEED=$pf_seed LD_PRELOAD="$libs" \
-     timeout 120 pf-localization "$ini" "$rawlog" </dev/null >pf.log 2>&1) || code=$?
+  # In a sanitizer build the sanitizer runtime comes first (scripts/sanitize-tests.sh).
+  (cd "$dir" && WHISKERMAP_PF_SEED=$pf_seed LD_PRELOAD="${WHISKERMAP_TOOL_PRELOAD:+$WHISKERMAP_TOOL_PRELOAD:}$libs" \
+     timeout "${WHISKERMAP_TOOL_TIMEOUT:-120}" pf-localization "$ini" "$rawlog" </dev/null >pf.log 2>&1) || code=$?
   if [[ $code -ne 0 ]]; then
     tail -20 "$dir/pf.log"; echo "FAIL: pf-localization exited $code (log: $dir/pf.log)"; exit 1
   fi

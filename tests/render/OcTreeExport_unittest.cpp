@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 #include <octomap/OcTree.h>
+#include <whiskermap/core/Error.h>
 #include <whiskermap/render/OcTreeExport.h>
 
 #include <filesystem>
@@ -42,4 +43,17 @@ TEST(OcTreeExport, OneTableHasTheVolumeOfItsLegsAndTop)
 TEST(OcTreeExport, UnwritablePathIsAnError)
 {
 	EXPECT_THROW(render::OcTreeExport::write({}, {}, "/nonexistent-dir/x.bt"), std::exception);
+}
+
+// Regression (issue 8): far from the origin `x += resolution` stopped advancing (a hang);
+// now a table beyond the octree's 16-bit key range is a clear error, and one inside it works.
+TEST(OcTreeExport, FarTablesAreRefusedAndTablesNearTheRangeWork)
+{
+	const auto path = (std::filesystem::temp_directory_path() / "whiskermap_far.bt").string();
+	for (const double x : {1e15, -4.3e8, 2.1e9, 700.0})
+		EXPECT_THROW(render::OcTreeExport::write({{x, 0, 0, 1.0, 0.6, 0.05, 0.7}}, {0.02, 0.7, 0.03}, path),
+					 whiskermap::core::Error) << x;
+	EXPECT_FALSE(std::filesystem::exists(path));
+	EXPECT_GT(render::OcTreeExport::write({{600.0, -600.0, 0, 1.0, 0.6, 0.05, 0.7}}, {0.02, 0.7, 0.03}, path), 0u);
+	std::filesystem::remove(path);
 }

@@ -130,3 +130,37 @@ TEST(Trajectory, PathFileParsesAndRejectsBadLines)
 	fs::remove(good);
 	fs::remove(bad);
 }
+
+// Regression (issue 8): a path file was read with unbounded lines into memory, and far or
+// non-finite poses were accepted (they hung the spatial code downstream).
+TEST(Trajectory, PathFileLinesAndPosesAreBounded)
+{
+	auto errorOf = [](const std::string& name, const std::string& text) -> std::string {
+		const auto path = writeTemp(name, text);
+		std::string e;
+		try
+		{
+			world::Trajectory::pathFileSource(path);
+		}
+		catch (const core::Error& x)
+		{
+			e = x.what();
+		}
+		fs::remove(path);
+		return e;
+	};
+	EXPECT_NE(errorOf("long", "1 2 0\n" + std::string(100000, '1')).find("line 2: longer than 4096 bytes"), std::string::npos);
+	EXPECT_NE(errorOf("nul", std::string("1 2 0\n1 2\0 0\n", 13)).find("line 2: holds a control byte 0"), std::string::npos);
+	for (const char* far : {"2.1e9 0 0", "0 1e300 0", "nan 0 0", "0 0 inf", "0 0 1e9"})
+		EXPECT_NE(errorOf("far", std::string("1 1 0\n") + far + "\n").find("line 2: expected 'x y yaw_deg'"), std::string::npos) << far;
+	EXPECT_NE(errorOf("empty", "% nothing\n").find("holds no poses"), std::string::npos);
+	const auto ok = writeTemp("ok", "1 1 0\n-99999 99999 3600\n");
+	auto src = world::Trajectory::pathFileSource(ok);
+	EXPECT_EQ(src->size(), 2u);
+	mrpt::poses::CPose2D p;
+	EXPECT_TRUE(src->next(p) && src->next(p) && !src->next(p));
+	src->rewind();
+	EXPECT_TRUE(src->next(p));
+	EXPECT_DOUBLE_EQ(p.x(), 1);
+	fs::remove(ok);
+}

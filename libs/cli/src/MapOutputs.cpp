@@ -1,17 +1,17 @@
 #include <sys/resource.h>
 
-#include <mrpt/maps/CSimpleMap.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/opengl/CGridPlaneXY.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CPointCloud.h>
 #include <mrpt/opengl/CSetOfLines.h>
-#include <mrpt/poses/CPose3DPDFGaussian.h>
 #include <whiskermap/cli/MapOutputs.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/eval/EvalReport.h>
 #include <whiskermap/maps/MapCsv.h>
 #include <whiskermap/render/OcTreeExport.h>
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -61,12 +61,6 @@ void drawBlackboard(
 	img.save(path);
 }
 
-std::string indent(std::string json)
-{
-	for (size_t p = json.find('\n'); p != std::string::npos && p + 1 < json.size(); p = json.find('\n', p + 1))
-		json.insert(p + 1, "  ");
-	return json.substr(0, json.find_last_not_of('\n') + 1);
-}
 }  // namespace
 
 MapOutputs::MapOutputs(OutputDir& out, const maps::CHierarchicalObjectMap& map, const TSettings& s)
@@ -76,6 +70,8 @@ MapOutputs::MapOutputs(OutputDir& out, const maps::CHierarchicalObjectMap& map, 
 	  m_montage(s.x0, s.x1, s.y0, s.y1),
 	  m_contacts(s.x0, s.x1, s.y0, s.y1)
 {
+	if (s.world) m_ident.emplace(*s.world, eval::Identifiability::gateFor(s.maxSigmaR));
+	if (s.simpleMap) m_simpleMap.emplace(out.path("map.simplemap"), static_cast<uint32_t>(s.sweeps));
 	if (m_map.lasting()) return;
 	m_perPose.emplace(out.path("per_pose_tables.csv"));
 	if (s.world) m_eval.emplace(s.world->tables, eval::EvalOptions{}, true);
@@ -104,8 +100,10 @@ void MapOutputs::onStep(size_t index, const obs::RawlogReader::Sweep& sweep, dou
 	}
 	m_path.add(rec.pose);
 	if (m_eval) m_eval->add(rec.tables, rec.pose);
-	if (m_s.world || m_s.simpleMap) m_kept.push_back(sweep);
-	m_ms.push_back(ms);
+	if (m_ident) m_ident->add(sweep);
+	if (m_simpleMap) m_simpleMap->add(sweep.robotPose, sweep.obs);
+	m_ms.add(ms);
+	m_totalMs += ms;
 	m_steps++;
 	m_shapeletCount += shapelets.size();
 	m_tables += rec.tables.size();
@@ -136,7 +134,7 @@ void MapOutputs::drawSnapshot(size_t index)
 		m_out.path("blackboard_pose" + k + "_map.png"));
 }
 
-double MapOutputs::medianMs() const { return percentile(m_ms, 0.5); }
+double MapOutputs::medianMs() const { return percentile(m_ms.items(), 0.5); }
 
 void MapOutputs::writeScene(const std::string& path) const
 {
@@ -197,17 +195,7 @@ std::string MapOutputs::finish(double wallSeconds)
 	const auto& ro = m_map.renderOptions;
 	render::OcTreeExport::write(
 		mapped, {ro.octomap_resolution, ro.table_height, ro.top_thickness}, m_out.path("map.bt"));
-	if (m_s.simpleMap)
-	{
-		mrpt::maps::CSimpleMap sm;
-		for (const auto& s : m_kept)
-		{
-			auto sf = mrpt::obs::CSensoryFrame::Create();
-			sf->insert(s.obs);
-			sm.insert(mrpt::poses::CPose3DPDFGaussian::Create(mrpt::poses::CPose3D(s.robotPose)), sf);
-		}
-		if (!sm.saveToFile(m_out.path("map.simplemap"))) throw core::Error("map.simplemap: cannot write");
-	}
+	if (m_simpleMap) m_simpleMap->close();
 
 	std::string metricsJson, text;
 	if (m_s.world)
@@ -215,8 +203,7 @@ std::string MapOutputs::finish(double wallSeconds)
 		eval::EvalReport r;
 		r.map = eval::MapEvaluation::compute(m_s.world->tables, mapped, r.options);
 		if (m_eval) r.perPose = m_eval->result();
-		r.identifiability =
-			eval::Identifiability::of(*m_s.world, m_kept, eval::Identifiability::defaultGate(m_kept));
+		r.identifiability = m_ident->result();
 		metricsJson = r.toJson();
 		text = r.toText();
 		std::ofstream f(m_out.path("metrics.json"));
@@ -230,52 +217,41 @@ std::string MapOutputs::finish(double wallSeconds)
 void MapOutputs::writeSummary(
 	const std::string& path, double wallSeconds, size_t mapped, size_t candidates, const std::string& metricsJson) const
 {
-	double totalMs = 0;
 	uint64_t proposals = 0;
-	for (double t : m_ms) totalMs += t;
 	for (auto n : m_map.proposed()) proposals += n;
 	rusage usage{};
 	::getrusage(RUSAGE_SELF, &usage);
-	std::ofstream f(path);
-	char buf[256];
-	f << "{\n";
-	f << "  \"input\": \"" << m_s.input << "\",\n  \"config\": \"" << m_s.config << "\",\n";
-	f << "  \"seed\": " << m_map.insertionOptions.seed << ",\n  \"jobs\": " << m_s.jobs << ",\n";
-	f << "  \"mode\": \"" << (m_map.lasting() ? "lasting" : "per_pose") << "\",\n";
-	f << "  \"poses\": " << m_steps << ",\n  \"shapelets\": " << m_shapeletCount << ",\n";
+	const auto fixed = [](double v, int decimals) { return std::round(v * std::pow(10, decimals)) / std::pow(10, decimals); };
+	nlohmann::ordered_json j;  // a JSON writer: any path (quotes, backslashes) stays valid JSON
+	j["input"] = m_s.input;
+	j["config"] = m_s.config;
+	j["seed"] = m_map.insertionOptions.seed;
+	j["jobs"] = m_s.jobs;
+	j["mode"] = m_map.lasting() ? "lasting" : "per_pose";
+	j["poses"] = m_steps;
+	j["shapelets"] = m_shapeletCount;
 	if (m_map.lasting())
 	{
 		const auto& st = m_map.lastingMap().state();
-		std::snprintf(buf, sizeof(buf),
-					  "  \"local_problem\": {\"insertions\": %llu, \"mean_visited\": %.2f, \"mean_hypotheses\": %.2f},\n",
-					  static_cast<unsigned long long>(m_insertions), m_insertions ? double(m_visited) / m_insertions : 0.0,
-					  m_insertions ? double(m_board) / m_insertions : 0.0);
-		f << buf;
-		f << "  \"state\": {\"tables\": " << st.tableCount() << ", \"legs\": " << st.legCount()
-		  << ", \"explicit_contacts\": " << st.contactCount() << "},\n";
+		const double n = m_insertions ? double(m_insertions) : 1.0;
+		j["local_problem"] = {
+			{"insertions", m_insertions}, {"mean_visited", fixed(m_visited / n, 2)}, {"mean_hypotheses", fixed(m_board / n, 2)}};
+		j["state"] = {{"tables", st.tableCount()}, {"legs", st.legCount()}, {"explicit_contacts", st.contactCount()}};
 	}
 	else
-	{
-		std::snprintf(buf, sizeof(buf), "  \"tables_per_pose\": {\"mean\": %.4f, \"max\": %zu},\n",
-					  m_steps ? double(m_tables) / m_steps : 0.0, m_maxTables);
-		f << buf;
-	}
-	f << "  \"map_tables\": " << mapped << ",\n  \"map_candidates\": " << candidates << ",\n";
-	f << "  \"moves\": {";
+		j["tables_per_pose"] = {{"mean", fixed(m_steps ? double(m_tables) / m_steps : 0.0, 4)}, {"max", m_maxTables}};
+	j["map_tables"] = mapped;
+	j["map_candidates"] = candidates;
+	auto& moves = j["moves"] = nlohmann::ordered_json::object();
 	for (size_t k = 0; k < inference::MOVE_COUNT; k++)
-		f << (k ? ", " : "") << "\"" << MOVE_NAMES[k] << "\": {\"proposed\": " << m_map.proposed()[k]
-		  << ", \"accepted\": " << m_map.accepted()[k] << "}";
-	f << "},\n";
-	std::snprintf(buf, sizeof(buf), "  \"time_per_pose_ms\": {\"median\": %.4f, \"p95\": %.4f},\n",
-				  percentile(m_ms, 0.5), percentile(m_ms, 0.95));
-	f << buf;
-	std::snprintf(buf, sizeof(buf), "  \"proposals_per_second\": %.0f,\n", totalMs > 0 ? proposals / (totalMs / 1000) : 0.0);
-	f << buf;
-	std::snprintf(buf, sizeof(buf), "  \"wall_time_s\": %.3f,\n  \"peak_rss_mb\": %.1f", wallSeconds,
-				  usage.ru_maxrss / 1024.0);
-	f << buf;
-	if (!metricsJson.empty()) f << ",\n  \"metrics\": " << indent(metricsJson);
-	f << "\n}\n";
+		moves[MOVE_NAMES[k]] = {{"proposed", m_map.proposed()[k]}, {"accepted", m_map.accepted()[k]}};
+	j["time_per_pose_ms"] = {{"median", fixed(percentile(m_ms.items(), 0.5), 4)}, {"p95", fixed(percentile(m_ms.items(), 0.95), 4)}};
+	j["proposals_per_second"] = std::round(m_totalMs > 0 ? proposals / (m_totalMs / 1000) : 0.0);
+	j["wall_time_s"] = fixed(wallSeconds, 3);
+	j["peak_rss_mb"] = fixed(usage.ru_maxrss / 1024.0, 1);
+	if (!metricsJson.empty()) j["metrics"] = nlohmann::ordered_json::parse(metricsJson);
+	std::ofstream f(path);
+	f << j.dump(2) << "\n";
 	if (!f) throw core::Error(path + ": write failed");
 }
 }  // namespace whiskermap::cli

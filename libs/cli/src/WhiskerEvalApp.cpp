@@ -7,6 +7,7 @@
 #include <whiskermap/obs/RawlogReader.h>
 
 #include <iostream>
+#include <optional>
 
 namespace whiskermap::cli
 {
@@ -29,27 +30,38 @@ int run(const Options& o)
 	const auto estimated = eval::TableCsv::tables(eval::TableCsv::readMap(o.map));
 	report.map = eval::MapEvaluation::compute(w.tables, estimated, o.eval);
 
-	std::vector<obs::RawlogReader::Sweep> sweeps;
-	if (!o.rawlog.empty())
-	{
-		sweeps = obs::RawlogReader::read(o.rawlog).sweeps;
-		report.identifiability =
-			eval::Identifiability::of(w, sweeps, eval::Identifiability::defaultGate(sweeps));
-	}
+	// One streamed pass over the rawlog and the per-pose tables: memory bounded by the
+	// world and the map, not the log.
+	std::optional<obs::RawlogReader> reader;
+	if (!o.rawlog.empty()) reader.emplace(o.rawlog);  // checked end to end first
+	const size_t sweeps = reader ? reader->summary().sweepCount : 0;
+	std::optional<eval::TableCsv::PerPoseReader> perPose;
+	std::optional<eval::PerPoseEvaluation::Accumulator> acc;
 	if (!o.perPose.empty())
 	{
-		if (o.rawlog.empty() && o.poses == 0)
+		if (!reader && o.poses == 0)
 			throw core::Error(o.perPose + ": the number of poses is unknown: give --poses N or --rawlog");
-		if (!o.rawlog.empty() && o.poses != 0 && o.poses != sweeps.size())
+		if (reader && o.poses != 0 && o.poses != sweeps)
 			throw core::Error(
-				o.rawlog + ": holds " + std::to_string(sweeps.size()) + " sweeps, but --poses is " +
-				std::to_string(o.poses));
-		std::vector<mrpt::poses::CPose2D> robotPoses;
-		for (const auto& s : sweeps) robotPoses.push_back(s.robotPose);
-		const size_t n = sweeps.empty() ? o.poses : sweeps.size();
-		report.perPose = eval::PerPoseEvaluation::compute(
-			w.tables, eval::TableCsv::readPerPose(o.perPose, n), robotPoses, o.eval);
+				o.rawlog + ": holds " + std::to_string(sweeps) + " sweeps, but --poses is " + std::to_string(o.poses));
+		perPose.emplace(o.perPose, reader ? sweeps : o.poses);
+		acc.emplace(w.tables, o.eval, reader.has_value());
 	}
+	std::vector<world::Table> tables;
+	if (reader)
+	{
+		eval::Identifiability::Accumulator ident(w, eval::Identifiability::gateFor(reader->summary().maxSigmaR));
+		obs::RawlogReader::Sweep s;
+		while (reader->next(s))
+		{
+			ident.add(s);
+			if (perPose && perPose->next(tables)) acc->add(tables, s.robotPose);
+		}
+		report.identifiability = ident.result();
+	}
+	else if (perPose)
+		while (perPose->next(tables)) acc->add(tables, mrpt::poses::CPose2D());
+	if (acc) report.perPose = acc->result();
 	std::cout << (o.json ? report.toJson() : report.toText());
 	return 0;
 }

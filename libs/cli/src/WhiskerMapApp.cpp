@@ -9,7 +9,9 @@
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/maps/MapConfig.h>
+#include <whiskermap/render/OcTreeExport.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -29,23 +31,28 @@ struct Options
 };
 
 /** Picture bounds: the arena when known, else the robot positions plus whisker reach. */
-void bounds(const std::string& input, const world::World* w, MapOutputs::TSettings& s)
+void bounds(const obs::RawlogReader::Summary& in, const world::World* w, MapOutputs::TSettings& s)
 {
 	if (w)
 	{
 		s.x0 = w->x_min, s.x1 = w->x_max, s.y0 = w->y_min, s.y1 = w->y_max;
 		return;
 	}
-	s.x0 = s.y0 = 1e18, s.x1 = s.y1 = -1e18;
-	double reach = 0;
-	obs::RawlogReader::forEach(input, [&](const obs::RawlogReader::Sweep& sw) {
-		s.x0 = std::min(s.x0, sw.robotPose.x()), s.x1 = std::max(s.x1, sw.robotPose.x());
-		s.y0 = std::min(s.y0, sw.robotPose.y()), s.y1 = std::max(s.y1, sw.robotPose.y());
-		for (const auto& wh : sw.obs->whiskers)
-			reach = std::max(reach, std::hypot(wh.mount_x, wh.mount_y) + wh.length);
-	});
-	const double margin = reach + 0.2;
-	s.x0 -= margin, s.x1 += margin, s.y0 -= margin, s.y1 += margin;
+	const double margin = in.maxReach + 0.2;
+	s.x0 = in.x0 - margin, s.x1 = in.x1 + margin, s.y0 = in.y0 - margin, s.y1 = in.y1 + margin;
+}
+
+/** Tables lie within whisker reach of the robot: refuse early a log whose map could not be
+ *  exported as an OctoMap (its 16-bit keys span +-range around the origin). */
+void checkOctreeRange(const std::string& input, const obs::RawlogReader::Summary& in, double resolution)
+{
+	const double reach = in.maxReach + 2.0;  // plus a table's half-diagonal, generously
+	const double far = std::max({-in.x0, in.x1, -in.y0, in.y1}) + reach;
+	if (far >= render::OcTreeExport::range(resolution))
+		throw core::Error(
+			input + ": robot positions reach " + std::to_string(far - reach) + " m from the origin, beyond the map.bt export's range of +-" +
+			std::to_string(render::OcTreeExport::range(resolution)) + " m at octomap_resolution " + std::to_string(resolution) +
+			" m (raise it in the map config)");
 }
 
 int run(Options& o)
@@ -70,10 +77,20 @@ int run(Options& o)
 	settings.input = o.input, settings.config = o.config, settings.world = world ? &*world : nullptr;
 	settings.snapshotPose = o.snapshotPose, settings.snapshotTemperature = o.snapshotTemperature;
 	settings.quiet = o.quiet, settings.simpleMap = o.simpleMap, settings.jobs = o.jobs;
-	bounds(o.input, settings.world, settings);  // also verifies the whole rawlog (gzip check)
+	OutputDir out(o.outdir);  // refuses -o "" or a file
+	obs::RawlogReader reader(o.input);  // checks the whole rawlog before any work
+	const auto& summary = reader.summary();
+	checkOctreeRange(o.input, summary, map->renderOptions.octomap_resolution);
+	bounds(summary, settings.world, settings);
+	settings.sweeps = summary.sweepCount;
+	settings.maxSigmaR = summary.maxSigmaR;
+	if (summary.sweepCount == 0)
+		throw core::Error(o.input + ": holds no whisker observations (CObservationWhiskerContacts)");
+	if (o.snapshotPose >= static_cast<int>(summary.sweepCount))
+		throw core::Error("--snapshot-pose " + std::to_string(o.snapshotPose) + ": the rawlog has only " +
+						  std::to_string(summary.sweepCount) + " sweeps");
 
 	const auto t0 = std::chrono::steady_clock::now();
-	OutputDir out(o.outdir);
 	MapOutputs outputs(out, *map, settings);
 	const bool bar = !o.quiet && ::isatty(STDERR_FILENO);
 	MapRunner runner(multimap, *map, o.jobs, [&](size_t i, const obs::RawlogReader::Sweep& sw, double ms) {
@@ -81,22 +98,19 @@ int run(Options& o)
 		if (bar && i % 100 == 0) std::fprintf(stderr, "\rwhisker-map: %zu sweeps", i + 1);
 	});
 	if (o.snapshotPose >= 0) runner.snapshot(static_cast<size_t>(o.snapshotPose), o.snapshotTemperature);
-	obs::RawlogReader::Contents contents;
+	obs::RawlogReader::Sweep sweep;
 	if (o.reverse)
 	{
-		// The whole log in memory, then its sweeps last to first.
-		contents = obs::RawlogReader::read(o.input);
-		for (auto it = contents.sweeps.rbegin(); it != contents.sweeps.rend(); ++it) runner.add(*it);
+		// The sweeps last to first: the whole log in memory (--reverse is a test of order).
+		std::vector<obs::RawlogReader::Sweep> all;
+		while (reader.next(sweep)) all.push_back(sweep);
+		for (auto it = all.rbegin(); it != all.rend(); ++it) runner.add(*it);
 	}
 	else
-		contents = obs::RawlogReader::forEach(o.input, [&](const obs::RawlogReader::Sweep& sw) { runner.add(sw); });
+		while (reader.next(sweep)) runner.add(sweep);
 	runner.flush();
+	const auto& contents = summary;
 	if (bar) std::fprintf(stderr, "\rwhisker-map: %zu sweeps\n", contents.sweepCount);
-	if (contents.sweepCount == 0)
-		throw core::Error(o.input + ": holds no whisker observations (CObservationWhiskerContacts)");
-	if (o.snapshotPose >= static_cast<int>(contents.sweepCount))
-		throw core::Error("--snapshot-pose " + std::to_string(o.snapshotPose) + ": the rawlog has only " +
-						  std::to_string(contents.sweepCount) + " sweeps");
 	const std::string text = outputs.finish(
 		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 	out.commit();
@@ -144,7 +158,7 @@ int WhiskerMapApp::main(int argc, char** argv)
 		->capture_default_str();
 	app.add_flag("--simplemap", o.simpleMap,
 				 "Also write map.simplemap (the sweeps with their poses, for MRPT apps that rebuild the map; "
-				 "keeps every sweep in memory)");
+				 "streamed)");
 	app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
 	return runApp(app, argc, argv, "whisker-map", [&] { return run(o); });
 }

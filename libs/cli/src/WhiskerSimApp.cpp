@@ -1,6 +1,7 @@
 #include <CLI/CLI.hpp>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/core/Error.h>
+#include <whiskermap/core/OutputTransaction.h>
 #include <whiskermap/render/TopDownImage.h>
 #include <whiskermap/world/NoisePreset.h>
 #include <whiskermap/world/RawlogWriter.h>
@@ -53,57 +54,68 @@ int run(const Options& o)
 	const World w = World::load(o.world).tiled(o.tiles[0], o.tiles[1]);
 	const Robot robot = Robot::load(core::ConfigPaths::resolve(o.robot, "robots"));
 	const auto noise = NoisePreset::load(o.noise);
-	const auto once = o.path.empty() ? Trajectory::paperGrid(w, o.grid * o.tiles[0], o.grid * o.tiles[1])
-									 : Trajectory::readPathFile(o.path);
-	std::vector<mrpt::poses::CPose2D> poses;
-	for (int k = 0; k < o.repeat; k++) poses.insert(poses.end(), once.begin(), once.end());
+	// Poses one at a time (bounded memory however long the trajectory); a path file is
+	// checked whole before anything is simulated.
+	const auto poses = o.path.empty() ? Trajectory::paperGridSource(w, o.grid * o.tiles[0], o.grid * o.tiles[1])
+									  : Trajectory::pathFileSource(o.path);
 	WhiskerSimulator sim(w, robot, noise, o.seed);
+
+	// Every output (rawlog, its ground truth, the picture) is staged and committed together.
+	core::OutputTransaction outputs;
+	const std::filesystem::path op(o.out);
+	const std::string worldPath = (op.parent_path() / (op.stem().string() + "_ground_truth_world.ini")).string();
+	const std::string pngPath = o.png.empty() ? "" : outputs.stage(o.png);
+	const std::string stagedRawlog = outputs.stage(o.out);
+	outputs.stage(RawlogWriter::groundTruthPathFile(o.out));  // RawlogWriter writes it beside the staged rawlog
+	const std::string stagedWorld = outputs.stage(worldPath);
 
 	// Fixed, synthetic clock: one sweep per second from a fixed epoch (reproducible bytes).
 	const double t0 = 1300000000.0;
-	RawlogWriter out(o.out, RawlogFormatOption::parse(o.format));
+	RawlogWriter out(stagedRawlog, RawlogFormatOption::parse(o.format));
 	render::TopDownImage picture(w.x_min, w.x_max, w.y_min, w.y_max);
 	ContactStatistic stat;
 	size_t written = 0, skipped = 0, contacts = 0, wallContacts = 0;
 	std::vector<WhiskerSimulator::Truth> truth;
-	for (const auto& p : poses)
-	{
-		if (!sim.poseIsFree(p))
+	mrpt::poses::CPose2D p;
+	for (int k = 0; k < o.repeat; k++)
+		for (poses->rewind(); poses->next(p);)
 		{
-			skipped++;
-			if (!o.quiet)
-				std::cerr << "whisker-sim: skipping pose (" << p.x() << ", " << p.y()
-						  << "): the robot body would overlap a leg or wall\n";
-			continue;
+			if (!sim.poseIsFree(p))
+			{
+				skipped++;
+				if (!o.quiet)
+					std::cerr << "whisker-sim: skipping pose (" << p.x() << ", " << p.y()
+							  << "): the robot body would overlap a leg or wall\n";
+				continue;
+			}
+			const auto sweep = sim.sense(p, mrpt::Clock::fromDouble(t0 + written), &truth);
+			out.write(p, *sweep);
+			written++;
+			int onTables = 0;
+			for (const auto& t : truth)
+			{
+				onTables += t.table >= 0;
+				wallContacts += t.wall;
+			}
+			contacts += sweep->contactCount();
+			if (!o.png.empty())
+			{
+				picture.robot(p, {120, 120, 120});
+				for (const auto& s : sweep->toShapelets(p)) picture.shapelet(s, {220, 30, 30});
+			}
+			stat.add(onTables);
 		}
-		const auto sweep = sim.sense(p, mrpt::Clock::fromDouble(t0 + written), &truth);
-		out.write(p, *sweep);
-		written++;
-		int onTables = 0;
-		for (const auto& t : truth)
-		{
-			onTables += t.table >= 0;
-			wallContacts += t.wall;
-		}
-		contacts += sweep->contactCount();
-		if (!o.png.empty())
-		{
-			picture.robot(p, {120, 120, 120});
-			for (const auto& s : sweep->toShapelets(p)) picture.shapelet(s, {220, 30, 30});
-		}
-		stat.add(onTables);
-	}
 	if (written == 0) throw core::Error(o.out + ": every pose was blocked, nothing to write");
 	out.close();
-	const std::filesystem::path op(o.out);
-	w.save((op.parent_path() / (op.stem().string() + "_ground_truth_world.ini")).string());
+	w.save(stagedWorld);
 	if (!o.png.empty())
 	{
 		picture.arena(w, {0, 0, 0});
 		for (const auto& t : w.tables) picture.table(t, {0, 0, 200}, 2);
 		picture.caption(std::filesystem::path(o.out).filename().string() + ": tables (blue), robot poses (grey), contacts + normals (red)");
-		picture.save(o.png);
+		picture.save(pngPath);
 	}
+	outputs.commit();
 
 	if (!o.quiet)
 	{

@@ -1,10 +1,12 @@
 #include <whiskermap/core/Error.h>
+#include <mrpt/config/CConfigFile.h>
 #include <whiskermap/core/IniSection.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <vector>
 
 namespace whiskermap::core
@@ -40,7 +42,7 @@ bool IniSection::has(const std::string& key) const { return m_cfg.keyExists(m_se
 
 void IniSection::fail(const std::string& key, const std::string& problem) const
 {
-	std::string where = m_file + ": [" + m_section + "]";
+	std::string where = iniWhere(m_cfg, m_section, key, m_file) + "[" + m_section + "]";
 	if (!key.empty()) where += " " + key;
 	throw Error(where + ": " + problem);
 }
@@ -117,28 +119,42 @@ void IniSection::finish() const
 		if (!m_read.count(k)) fail(k, "unknown key");
 }
 
-std::unique_ptr<mrpt::config::CConfigFile> openIniFile(
-	const std::string& path, const std::string& kind)
+std::unique_ptr<IniFile> openIniFile(const std::string& path, const std::string& kind)
 {
-	if (!std::filesystem::is_regular_file(path)) throw Error(path + ": no such " + kind);
-	std::ifstream f(path);
-	std::string line;
-	for (int n = 1; std::getline(f, line); n++)
-	{
-		const std::string t = stripComment(line);
-		const bool ok = t.empty() ||
-			(t.front() == '[' && t.back() == ']' && t.size() > 2 &&
-			 t.find_first_of("[]", 1) == t.size() - 1) ||
-			(t.find('=') != std::string::npos && t.find('=') > 0 && t.front() != '[');
-		if (!ok) throw Error(path + ": line " + std::to_string(n) + ": malformed line '" + t + "'");
-	}
-	return std::make_unique<mrpt::config::CConfigFile>(path);
+	std::error_code ec;
+	if (!std::filesystem::is_regular_file(path, ec)) throw Error(path + ": no such " + kind);
+	if (std::filesystem::file_size(path, ec) > IniFile::MAX_BYTES) throw Error(path + ": larger than 64 MiB, not a " + kind);
+	std::ifstream f(path, std::ios::binary);
+	std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+	if (f.bad()) throw Error(path + ": cannot read " + kind);
+	return std::make_unique<IniFile>(text, path);
 }
 
 std::string configLabel(const mrpt::config::CConfigFileBase& cfg)
 {
+	if (const auto* ini = dynamic_cast<const IniFile*>(&cfg)) return ini->label();
 	const auto* file = dynamic_cast<const mrpt::config::CConfigFile*>(&cfg);
 	return file && !file->getAssociatedFile().empty() ? file->getAssociatedFile() : "<config>";
+}
+
+std::string iniWhere(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key,
+	const std::string& label)
+{
+	const auto* ini = dynamic_cast<const IniFile*>(&cfg);
+	int line = ini ? ini->lineOf(section, key) : 0;
+	if (ini && !line) line = ini->lineOf(section);
+	return (label.empty() ? configLabel(cfg) : label) + ": " + (line ? "line " + std::to_string(line) + ": " : "");
+}
+
+long sectionIndex(const std::string& section, const std::string& prefix, long limit)
+{
+	if (section.rfind(prefix, 0) != 0) return -1;
+	const std::string n = section.substr(prefix.size());
+	if (n.empty() || n.size() > 9 || n.find_first_not_of("0123456789") != std::string::npos) return -1;
+	if (n.size() > 1 && n[0] == '0') return -1;
+	const long v = std::stol(n);
+	return v < limit ? v : -1;
 }
 
 void rejectUnknownSections(
@@ -151,7 +167,7 @@ void rejectUnknownSections(
 	{
 		if (s.empty() || allowed.count(s)) continue;
 		if (!prefix.empty() && s.rfind(prefix, 0) == 0) continue;
-		throw Error(fileLabel + ": [" + s + "]: unknown section");
+		throw Error(iniWhere(cfg, s, "", fileLabel) + "[" + s + "]: unknown section");
 	}
 }
 }  // namespace whiskermap::core

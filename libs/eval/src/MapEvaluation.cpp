@@ -1,5 +1,5 @@
 #include <whiskermap/core/Angles.h>
-#include <whiskermap/eval/Hungarian.h>
+#include <whiskermap/eval/SparseAssignment.h>
 #include <whiskermap/eval/MapEvaluation.h>
 #include <whiskermap/eval/Ospa.h>
 
@@ -21,30 +21,30 @@ MapEvaluation MapEvaluation::compute(
 {
 	opts.validate();
 	const auto est = centres(estimated), tru = centres(truth);
-	// Rows: true tables, columns: estimated ones. Yaw error modulo 180 degrees (symmetry).
-	Eigen::MatrixXd cost(truth.size(), estimated.size()), yawErr(truth.size(), estimated.size());
-	for (size_t i = 0; i < truth.size(); i++)
-		for (size_t j = 0; j < estimated.size(); j++)
-		{
-			const double d = (tru[i] - est[j]).norm();
-			yawErr(i, j) =
-				core::rad2deg(std::abs(core::angleDiff(estimated[j].yaw, truth[i].yaw, M_PI)));
-			const bool allowed = d <= opts.gate_distance && yawErr(i, j) <= opts.gate_yaw_deg;
-			cost(i, j) = allowed ? d : INFINITY;
-		}
+	// Rows: true tables, columns: estimated ones; only pairs within the centre gate are
+	// scored (a grid finds them), and the assignment is solved per connected component.
+	// Yaw error modulo 180 degrees (symmetry).
+	std::vector<SparseAssignment::Pair> pairs;
+	std::vector<double> yawErr;
+	for (const auto& p : SparseAssignment::near(tru, est, opts.gate_distance))
+	{
+		const double yaw = core::rad2deg(std::abs(core::angleDiff(estimated[p.col].yaw, truth[p.row].yaw, M_PI)));
+		if (yaw > opts.gate_yaw_deg) continue;
+		pairs.push_back(p);
+		yawErr.push_back(yaw);
+	}
 
 	MapEvaluation e;
 	e.estimated = estimated.size();
 	e.truth = truth.size();
-	e.truthMatch = Hungarian::solve(cost);
+	e.truthMatch = SparseAssignment::solve(static_cast<int>(truth.size()), static_cast<int>(estimated.size()), pairs, INFINITY);
 	double sumSq = 0, sumYaw = 0;
-	for (size_t i = 0; i < truth.size(); i++)
+	for (size_t k = 0; k < pairs.size(); k++)
 	{
-		const int j = e.truthMatch[i];
-		if (j < 0) continue;
+		if (e.truthMatch[pairs[k].row] != pairs[k].col) continue;
 		e.matched++;
-		sumSq += cost(i, j) * cost(i, j);
-		sumYaw += yawErr(i, j);
+		sumSq += pairs[k].cost * pairs[k].cost;
+		sumYaw += yawErr[k];
 	}
 	e.figures = Figures::of(
 		e.estimated, e.truth, e.matched, sumSq, sumYaw,

@@ -1,7 +1,8 @@
 #include <whiskermap/core/Error.h>
-#include <whiskermap/eval/Hungarian.h>
+#include <whiskermap/eval/SparseAssignment.h>
 #include <whiskermap/eval/Ospa.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace whiskermap::eval
@@ -15,13 +16,16 @@ double Ospa::distance(
 	const auto& large = X.size() <= Y.size() ? Y : X;
 	if (large.empty()) return 0;
 	if (small.empty()) return c;
-	Eigen::MatrixXd cost(small.size(), large.size());
-	for (size_t i = 0; i < small.size(); i++)
-		for (size_t j = 0; j < large.size(); j++)
-			cost(i, j) = std::pow(std::min(c, (small[i] - large[j]).norm()), p);
-	const auto assignment = Hungarian::solve(cost);
-	double sum = std::pow(c, p) * double(large.size() - small.size());
-	for (size_t i = 0; i < small.size(); i++) sum += cost(i, assignment[i]);
+	// Pairs at c or farther cost c^p, as much as leaving them unmatched: only nearer pairs
+	// are scored, as d^p - c^p (< 0) against 0 for unmatched, per connected component:
+	// total = c^p n + the least sum over a matching.
+	auto pairs = SparseAssignment::near(small, large, c);
+	for (auto& q : pairs) q.cost = std::pow(q.cost, p) - std::pow(c, p);
+	const auto assignment = SparseAssignment::solve(static_cast<int>(small.size()), static_cast<int>(large.size()), pairs, 0.0);
+	double sum = std::pow(c, p) * double(large.size());
+	for (const auto& q : pairs)
+		if (assignment[q.row] == q.col) sum += q.cost;
+	sum = std::max(sum, 0.0);
 	return std::pow(sum / double(large.size()), 1 / p);
 }
 }  // namespace whiskermap::eval

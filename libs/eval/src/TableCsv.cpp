@@ -1,5 +1,6 @@
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/core/Error.h>
+#include <whiskermap/core/LineReader.h>
 #include <whiskermap/eval/TableCsv.h>
 
 #include <cctype>
@@ -8,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -83,35 +86,40 @@ class Row
 	std::string m_where;
 };
 
-/** Reads `path`, checks its header is `header`, then calls `onRow` for each data line
- *  after checking its column count. */
+/** Reads a CSV in bounded memory: checks the header, then gives one checked row at a time. */
+class CsvReader
+{
+   public:
+	CsvReader(const std::string& path, std::string header)
+		: m_in(path, "file"), m_path(path), m_header(std::move(header)), m_names(split(m_header))
+	{
+		std::string line;
+		if (!m_in.next(line)) throw core::Error(path + ": empty file (expected the header '" + m_header + "')");
+		if (line != m_header)
+			throw core::Error(m_in.where() + "bad header '" + line + "' (expected '" + m_header + "')");
+	}
+	/** The next data row (its column count checked); empty optional at the end. */
+	std::optional<Row> next()
+	{
+		std::string line;
+		if (!m_in.next(line)) return std::nullopt;
+		auto fields = split(line);
+		if (fields.size() != m_names.size())
+			throw core::Error(
+				m_in.where() + "expected " + std::to_string(m_names.size()) + " columns, got " + std::to_string(fields.size()));
+		return Row(m_names, std::move(fields), m_in.where());
+	}
+
+   private:
+	core::LineReader m_in;
+	std::string m_path, m_header;
+	std::vector<std::string> m_names;
+};
+
 void readCsv(const std::string& path, const std::string& header, const std::function<void(const Row&)>& onRow)
 {
-	if (!std::filesystem::is_regular_file(path)) throw core::Error(path + ": no such file");
-	std::ifstream in(path);
-	if (!in) throw core::Error(path + ": cannot read file");
-	const auto names = split(header);
-	std::string line;
-	size_t n = 1;
-	for (; std::getline(in, line); n++)
-	{
-		if (!line.empty() && line.back() == '\r') line.pop_back();
-		const std::string where = path + ": line " + std::to_string(n) + ": ";
-		if (n == 1)
-		{
-			if (line != header)
-				throw core::Error(where + "bad header '" + line + "' (expected '" + header + "')");
-			continue;
-		}
-		auto fields = split(line);
-		if (fields.size() != names.size())
-			throw core::Error(
-				where + "expected " + std::to_string(names.size()) + " columns, got " +
-				std::to_string(fields.size()));
-		onRow(Row(names, std::move(fields), where));
-	}
-	if (in.bad()) throw core::Error(path + ": read error");
-	if (n == 1) throw core::Error(path + ": empty file (expected the header '" + header + "')");
+	CsvReader in(path, header);
+	while (const auto row = in.next()) onRow(*row);
 }
 }  // namespace
 
@@ -132,17 +140,60 @@ std::vector<TableCsv::MapRow> TableCsv::readMap(const std::string& path)
 	return rows;
 }
 
+struct TableCsv::PerPoseReader::Impl
+{
+	Impl(const std::string& path, size_t n) : in(path, PER_POSE_HEADER), poses(n) {}
+	CsvReader in;
+	size_t poses, next = 0;  ///< the pose next() gives next
+	std::optional<std::pair<size_t, world::Table>> pending;  ///< a row read ahead
+	size_t lastPose = 0;
+	bool any = false;
+
+	/** Reads the next row into `pending` (checked: range and order). */
+	void readAhead()
+	{
+		const auto r = in.next();
+		if (!r) return;
+		const long pose = r->integer(0, 1e9);
+		const world::Table t = r->table();
+		r->number(8, -INFINITY, INFINITY);  // log_posterior: checked, not used
+		if (size_t(pose) >= poses)
+			r->fail("pose " + std::to_string(pose) + " out of range (" + std::to_string(poses) + " poses)");
+		if (any && size_t(pose) < lastPose)
+			r->fail("pose " + std::to_string(pose) + " after pose " + std::to_string(lastPose) +
+					" (rows must be in pose order, as whisker-map writes them)");
+		lastPose = size_t(pose), any = true;
+		pending.emplace(size_t(pose), t);
+	}
+};
+
+TableCsv::PerPoseReader::PerPoseReader(const std::string& path, size_t poses) : m(std::make_unique<Impl>(path, poses))
+{
+	m->readAhead();
+}
+
+TableCsv::PerPoseReader::~PerPoseReader() = default;
+
+bool TableCsv::PerPoseReader::next(std::vector<world::Table>& tables)
+{
+	tables.clear();
+	if (m->next == m->poses) return false;
+	while (m->pending && m->pending->first == m->next)
+	{
+		tables.push_back(m->pending->second);
+		m->pending.reset();
+		m->readAhead();
+	}
+	m->next++;
+	return true;
+}
+
 std::vector<std::vector<world::Table>> TableCsv::readPerPose(const std::string& path, size_t poses)
 {
-	std::vector<std::vector<world::Table>> perPose(poses);
-	readCsv(path, PER_POSE_HEADER, [&](const Row& r) {
-		const long pose = r.integer(0, 1e9);
-		const world::Table t = r.table();
-		r.number(8, -INFINITY, INFINITY);  // log_posterior: checked, not used
-		if (size_t(pose) >= poses)
-			r.fail("pose " + std::to_string(pose) + " out of range (" + std::to_string(poses) + " poses)");
-		perPose[pose].push_back(t);
-	});
+	std::vector<std::vector<world::Table>> perPose;
+	PerPoseReader r(path, poses);
+	std::vector<world::Table> tables;
+	while (r.next(tables)) perPose.push_back(tables);
 	return perPose;
 }
 

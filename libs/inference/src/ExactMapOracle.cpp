@@ -509,7 +509,7 @@ class Search
 		branch(rest & ~low, value);  // the lowest shapelet uncaused
 		for (size_t k = 0; k < m_opts.size(); k++)
 		{
-			const Option& o = m_opts[k];
+			const Option o = m_opts[k];  // a copy: the recursion below appends to m_opts
 			if (!(o.mask & low) || (o.mask & rest) != o.mask) continue;
 			double v = value + o.gain + model::logOverlap(overlaps(o.leg), m_p);
 			if (o.table >= 0)

@@ -73,12 +73,14 @@ TMappedObject CHierarchicalObjectMap::mapped(model::Id t) const
 {
 	const auto& s = m_lasting.state();
 	TMappedObject m{toWorldTable(s.table(t)), s.existence(t), 0, 0};
+	uint8_t corners = 0;  // corners with a leg that explains contacts (two legs may share one)
 	for (const model::Id l : s.legsOf(t))
 	{
 		const uint64_t n = s.contactsExplained(l);
 		m.contacts += n;
-		m.legs += n > 0;
+		if (n > 0 && s.leg(l).corner >= 0) corners = static_cast<uint8_t>(corners | (1u << s.leg(l).corner));
 	}
+	m.legs = static_cast<uint32_t>(std::bitset<4>(corners).count());
 	return m;
 }
 

@@ -5,6 +5,8 @@
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/maps/MapConfig.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <memory>
 
 namespace whiskermap::maps
@@ -14,26 +16,42 @@ mrpt::maps::TSetOfMetricMapInitializers MapConfig::load(const std::string& path)
 	const auto file = core::openIniFile(path, "map config file");
 	const std::string section = "MetricMap";
 	if (!file->sectionExists(section)) throw core::Error(path + ": [" + section + "]: missing section");
+	constexpr long MAX_MAPS = 100;  // per map type
 
 	const auto& registry = mrpt::maps::internal::TMetricMapTypesRegistry::Instance().getAllRegistered();
 	std::vector<std::string> keys;
 	file->getAllKeys(section, keys);
+	core::IniSection counts(*file, section, path);
 	size_t ours = 0;
 	std::string ourName = "hierarchicalObjectMap";
+	std::vector<std::string> prefixes;  // sections the declared maps may read
 	for (const auto& k : keys)
 	{
 		const std::string suffix = "_count";
 		const bool isCount = k.size() > suffix.size() && k.compare(k.size() - suffix.size(), suffix.size(), suffix) == 0;
 		const std::string name = isCount ? k.substr(0, k.size() - suffix.size()) : k;
 		if (!isCount || !registry.count(name))
-			throw core::Error(
-				path + ": [" + section + "] " + k + ": unknown map type '" + name +
-				"' (is its library loaded?)");
+			counts.fail(k, "unknown map type '" + name + "' (is its library loaded?)");
+		const long n = counts.integer(k, 0, MAX_MAPS);
+		for (long i = 0; i < n; i++)
+		{
+			char idx[24];
+			std::snprintf(idx, sizeof(idx), "%02ld", i);
+			prefixes.push_back(section + "_" + name + "_" + idx + "_");
+		}
 		if (name == "hierarchicalObjectMap" || name == "whiskermap::maps::CHierarchicalObjectMap")
 		{
-			ours += file->read_uint64_t(section, k, 0);
+			ours += static_cast<size_t>(n);
 			ourName = name;
 		}
+	}
+	// Every other section must belong to a declared map ([bogus] is an error, with its line).
+	for (const auto& s : file->sectionsInOrder())
+	{
+		if (s == section) continue;
+		if (std::none_of(prefixes.begin(), prefixes.end(), [&](const std::string& p) { return s.rfind(p, 0) == 0; }))
+			throw core::Error(core::iniWhere(*file, s) + "[" + s + "]: unknown section (no map declared in [" + section +
+							  "] reads it)");
 	}
 	if (ours != 1)
 		throw core::Error(

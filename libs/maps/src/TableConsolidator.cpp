@@ -31,8 +31,8 @@ void TableConsolidator::setObjects(std::vector<TMapObject> objects)
 void TableConsolidator::near(double x, double y, double radius, std::vector<uint32_t>& out) const
 {
 	out.clear();
-	for (int ix = cellOf(x - radius); ix <= cellOf(x + radius); ix++)
-		for (int iy = cellOf(y - radius); iy <= cellOf(y + radius); iy++)
+	for (int64_t ix = cellOf(x - radius); ix <= cellOf(x + radius); ix++)
+		for (int64_t iy = cellOf(y - radius); iy <= cellOf(y + radius); iy++)
 			if (auto it = m_grid.find(key(ix, iy)); it != m_grid.end())
 				out.insert(out.end(), it->second.begin(), it->second.end());
 	std::sort(out.begin(), out.end());  // deterministic order, whatever the hashing

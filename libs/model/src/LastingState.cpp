@@ -284,7 +284,12 @@ void LastingState::restore(
 	for (size_t i = 0; i < legs.size(); i++)
 	{
 		Leg l = legs[i];
-		if (l.parent != NONE) l.parent = tableIds.at(static_cast<size_t>(l.parent));
+		l.corner = -1;
+		if (l.parent != NONE)
+		{
+			l.parent = tableIds.at(static_cast<size_t>(l.parent));
+			l.corner = logLegGivenTable(l, m_tables[l.parent], m_sizes).corner;  // argmin of eq. 6
+		}
 		legIds.push_back(addLeg(l, evidence[i]));
 	}
 	for (const Contact& k : contacts)

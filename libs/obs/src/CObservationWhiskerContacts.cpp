@@ -3,6 +3,7 @@
 #include <whiskermap/core/Error.h>
 #include <whiskermap/obs/CObservationWhiskerContacts.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -14,6 +15,7 @@ namespace
 {
 constexpr double MAX_LENGTH = 10.0;  // metres: no whisker is longer
 constexpr double ANGLE_TOL = 1e-9;
+constexpr double MAX_ANGLE = 1e3;  // radians (angles), and texture: any sane value is far below
 
 void writeWhisker(mrpt::serialization::CArchive& out, const TWhisker& w)
 {
@@ -22,8 +24,25 @@ void writeWhisker(mrpt::serialization::CArchive& out, const TWhisker& w)
 }
 void readWhisker(mrpt::serialization::CArchive& in, TWhisker& w)
 {
-	in >> w.mount_x >> w.mount_y >> w.sweep_start >> w.sweep_end >> w.length >> w.touched >>
-		w.angle >> w.r >> w.normal >> w.texture;
+	in >> w.mount_x >> w.mount_y >> w.sweep_start >> w.sweep_end >> w.length;
+	const auto touched = in.ReadAs<uint8_t>();  // a bool byte other than 0 or 1 is refused
+	if (touched > 1) throw whiskermap::core::Error("CObservationWhiskerContacts: bool byte " + std::to_string(touched) + " is not 0 or 1");
+	w.touched = touched == 1;
+	in >> w.angle >> w.r >> w.normal >> w.texture;
+}
+/** The sensor label, its length bounded before anything is allocated. */
+std::string readLabel(mrpt::serialization::CArchive& in)
+{
+	const auto n = in.ReadAs<uint32_t>();
+	if (n > CObservationWhiskerContacts::MAX_LABEL)
+		throw whiskermap::core::Error(
+			"CObservationWhiskerContacts: stored sensor label length " + std::to_string(n) + " is not in [0, " +
+			std::to_string(CObservationWhiskerContacts::MAX_LABEL) + "]");
+	std::string s(n, '\0');
+	if (n) in.ReadBuffer(s.data(), n);
+	for (const char c : s)
+		if (c < 0x20 || c > 0x7e) throw whiskermap::core::Error("CObservationWhiskerContacts: sensor label holds a non-printable byte");
+	return s;
 }
 }  // namespace
 
@@ -44,7 +63,9 @@ void CObservationWhiskerContacts::serializeFrom(
 	{
 		case 0:
 		{
-			in >> timestamp >> sensorLabel >> sensorPose;
+			in >> timestamp;
+			sensorLabel = readLabel(in);
+			in >> sensorPose;
 			in >> noise.sigma_r >> noise.sigma_phi >> noise.sigma_tau;
 			const auto n = in.ReadAs<uint32_t>();
 			if (n == 0 || n > MAX_WHISKERS)
@@ -63,13 +84,21 @@ void CObservationWhiskerContacts::serializeFrom(
 
 void CObservationWhiskerContacts::validate() const
 {
-	const std::string who = "CObservationWhiskerContacts '" + sensorLabel + "'";
+	const bool printable = sensorLabel.size() <= MAX_LABEL &&
+		std::all_of(sensorLabel.begin(), sensorLabel.end(), [](char c) { return c >= 0x20 && c <= 0x7e; });
+	const std::string who = "CObservationWhiskerContacts" + (printable ? " '" + sensorLabel + "'" : std::string());
 	auto fail = [&](const std::string& what) { throw whiskermap::core::Error(who + ": " + what); };
+	if (!printable) fail("sensor label is longer than " + std::to_string(MAX_LABEL) + " characters or not printable ASCII");
 	if (whiskers.empty() || whiskers.size() > MAX_WHISKERS)
 		fail("whisker count " + std::to_string(whiskers.size()) + " is not in [1, " +
 			 std::to_string(MAX_WHISKERS) + "]");
-	for (double s : {noise.sigma_r, noise.sigma_phi, noise.sigma_tau})
-		if (!std::isfinite(s) || s < 0) fail("noise std-dev " + std::to_string(s) + " is not >= 0");
+	const double sigmaMax[3] = {1.0, 2 * M_PI, 1.0};  // sigma_r (m), sigma_phi (rad), sigma_tau
+	const double sigmas[3] = {noise.sigma_r, noise.sigma_phi, noise.sigma_tau};
+	for (int k = 0; k < 3; k++)
+		if (!(sigmas[k] >= 0 && sigmas[k] <= sigmaMax[k]))
+			fail("noise std-dev " + std::to_string(sigmas[k]) + " is not in [0, " + std::to_string(sigmaMax[k]) + "]");
+	for (double v : {sensorPose.x(), sensorPose.y(), sensorPose.z()})
+		if (!(std::abs(v) <= MAX_LENGTH)) fail("sensor pose is not within 10 m of the robot");
 	for (size_t i = 0; i < whiskers.size(); i++)
 	{
 		const auto& w = whiskers[i];
@@ -77,6 +106,10 @@ void CObservationWhiskerContacts::validate() const
 		for (double v : {w.mount_x, w.mount_y, w.sweep_start, w.sweep_end, w.length, w.angle, w.r,
 						 w.normal, w.texture})
 			if (!std::isfinite(v)) fail(at + "non-finite value (NaN or inf)");
+		for (double v : {w.sweep_start, w.sweep_end, w.angle, w.normal, w.texture})
+			if (std::abs(v) > MAX_ANGLE) fail(at + "value " + std::to_string(v) + " is beyond +-1000");
+		if (std::abs(w.mount_x) > MAX_LENGTH || std::abs(w.mount_y) > MAX_LENGTH || std::abs(w.r) > MAX_LENGTH)
+			fail(at + "mount or range beyond 10 m");
 		if (w.length <= 0 || w.length > MAX_LENGTH)
 			fail(at + "length " + std::to_string(w.length) + " m is not in (0, 10]");
 		const double lo = std::min(w.sweep_start, w.sweep_end);

@@ -1,125 +1,127 @@
-#include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/obs/CActionCollection.h>
-#include <mrpt/obs/CActionRobotMovement2D.h>
-#include <mrpt/obs/CObservationOdometry.h>
-#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/io/CMemoryStream.h>
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/core/conciseMessage.h>
 #include <whiskermap/obs/RawlogReader.h>
-#include <zlib.h>
 
-#include <array>
-#include <filesystem>
-#include <optional>
+#include <algorithm>
+#include <cmath>
 
-using namespace whiskermap::obs;
-using whiskermap::core::Error;
-
+namespace whiskermap::obs
+{
 namespace
 {
-/** Decompresses a whole gzip file once to catch truncation or corruption, which the
- *  object reader could otherwise take for a clean end of file. */
-void checkGzipIntegrity(const std::string& path)
+/** Deserializes the checked bytes of one sweep; it must use exactly those bytes. */
+CObservationWhiskerContacts::Ptr deserialize(const uint8_t* data, size_t size)
 {
-	std::array<unsigned char, 2> magic{};
-	{
-		FILE* f = std::fopen(path.c_str(), "rb");
-		if (!f) throw Error(path + ": cannot open file");
-		const size_t n = std::fread(magic.data(), 1, 2, f);
-		std::fclose(f);
-		if (n == 0) throw Error(path + ": empty file, not a rawlog");
-		if (n < 2 || magic[0] != 0x1f || magic[1] != 0x8b) return;  // plain, uncompressed
-	}
-	gzFile g = gzopen(path.c_str(), "rb");
-	if (!g) throw Error(path + ": cannot open file");
-	std::array<char, 1 << 16> buf{};
-	int got = 0;
-	while ((got = gzread(g, buf.data(), buf.size())) > 0)
-	{
-	}
-	int err = Z_OK;
-	std::string msg = gzerror(g, &err);
-	gzclose(g);
-	if (msg.rfind(path + ": ", 0) == 0) msg = msg.substr(path.size() + 2);
-	if (got < 0 || err != Z_OK)
-		throw Error(path + ": truncated or corrupt gzip data (" + msg + ")");
+	mrpt::io::CMemoryStream m;
+	m.assignMemoryNotOwn(data, size);
+	auto arch = mrpt::serialization::archiveFrom(m);
+	auto obj = arch.ReadObject();
+	auto sweep = std::dynamic_pointer_cast<CObservationWhiskerContacts>(obj);
+	if (!sweep || m.getPosition() != size) throw core::Error("sweep bytes do not match their checked layout");
+	return sweep;
 }
 }  // namespace
 
-RawlogReader::Contents RawlogReader::read(const std::string& path)
+RawlogReader::RawlogReader(const std::string& path)
+	: RawlogReader([path] { return ByteSource::file(path); }, path)
 {
-	std::vector<Sweep> sweeps;
-	auto c = forEach(path, [&](const Sweep& s) { sweeps.push_back(s); });
-	c.sweeps = std::move(sweeps);
-	return c;
 }
 
-RawlogReader::Contents RawlogReader::forEach(
-	const std::string& path, const std::function<void(const Sweep&)>& onSweep)
+RawlogReader::RawlogReader(std::function<std::unique_ptr<ByteSource>()> open, std::string label)
+	: m_open(std::move(open)), m_label(std::move(label))
 {
-	if (!std::filesystem::exists(path)) throw Error(path + ": no such file");
-	if (std::filesystem::is_directory(path)) throw Error(path + ": is a directory, not a rawlog");
-	checkGzipIntegrity(path);
+	// Pass 1: everything checked, the summary gathered; nothing kept.
+	m_src = m_open();
+	m_scan = std::make_unique<RawlogScanner>(*m_src, m_label);
+	Summary s;
+	s.x0 = s.y0 = INFINITY, s.x1 = s.y1 = -INFINITY;
+	Sweep sw;
+	while (advance(sw))
+	{
+		s.sweepCount++;
+		s.x0 = std::min(s.x0, sw.robotPose.x()), s.x1 = std::max(s.x1, sw.robotPose.x());
+		s.y0 = std::min(s.y0, sw.robotPose.y()), s.y1 = std::max(s.y1, sw.robotPose.y());
+		s.maxSigmaR = std::max(s.maxSigmaR, sw.obs->noise.sigma_r);
+		for (const auto& w : sw.obs->whiskers)
+			s.maxReach = std::max(s.maxReach, std::hypot(sw.obs->sensorPose.x() + w.mount_x, sw.obs->sensorPose.y() + w.mount_y) + w.length);
+	}
+	s.objects = m_scan->objects();
+	s.actionSensoryFrameFormat = m_anyIncrement;
+	if (s.objects == 0) throw core::Error(m_label + ": holds no objects, not a rawlog");
+	if (s.sweepCount == 0) s.x0 = s.x1 = s.y0 = s.y1 = 0;
+	m_summary = s;
+	// Pass 2 starts afresh.
+	m_scan.reset();
+	m_src = m_open();
+	m_scan = std::make_unique<RawlogScanner>(*m_src, m_label);
+	m_obj = {};
+	m_item = 0;
+	m_pose.reset();
+}
 
-	mrpt::io::CFileGZInputStream f;
-	if (!f.open(path)) throw Error(path + ": cannot open file");
-	auto arch = mrpt::serialization::archiveFrom(f);
+bool RawlogReader::next(Sweep& out) { return advance(out); }
 
-	Contents c;
-	std::optional<mrpt::poses::CPose2D> pose;
-	auto addSweep = [&](const mrpt::obs::CObservation::Ptr& o) {
-		auto w = std::dynamic_pointer_cast<CObservationWhiskerContacts>(o);
-		if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(o))
-			pose = odo->odometry;
-		if (!w) return;
-		if (!pose)
-			throw Error(
-				path + ": whisker sweep at object #" + std::to_string(c.objects) +
-				" has no robot pose before it (no odometry or action)");
-		c.sweepCount++;
-		onSweep(Sweep{*pose, w});
-	};
-
+bool RawlogReader::advance(Sweep& out)
+{
+	using Item = RawlogScanner::Item;
 	for (;;)
 	{
-		mrpt::serialization::CSerializable::Ptr obj;
-		try
+		if (m_item == m_obj.items.size())
 		{
-			obj = arch.ReadObject();
+			if (!m_scan->next(m_obj)) return false;
+			m_item = 0;
+			continue;
 		}
-		catch (const mrpt::serialization::CExceptionEOF&)
+		const Item& it = m_obj.items[m_item++];
+		const std::string where = m_label + ": object #" + std::to_string(m_scan->objects() - 1);
+		if (it.kind == Item::AbsolutePose)
+			m_pose = it.pose;
+		else if (it.kind == Item::Increment)
 		{
-			break;
-		}
-		catch (const std::exception& e)
-		{
-			throw Error(
-				path + ": corrupt rawlog at object #" + std::to_string(c.objects) + ": " +
-				core::conciseMessage(e));
-		}
-		if (auto acts = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
-		{
-			c.actionSensoryFrameFormat = true;
-			if (auto mv = acts->getBestMovementEstimation())
-				pose = (pose ? *pose : mrpt::poses::CPose2D()) + mv->poseChange->getMeanVal();
-		}
-		else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
-		{
-			for (const auto& o : *sf) addSweep(o);
-		}
-		else if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj))
-		{
-			addSweep(o);
+			m_anyIncrement = true;
+			const auto p = (m_pose ? *m_pose : mrpt::poses::CPose2D()) + it.pose;
+			const double b = RawlogScanner::MAX_COORDINATE;
+			if (!(std::abs(p.x()) <= b && std::abs(p.y()) <= b))
+				throw core::Error(where + ": the composed robot pose leaves the +-" + std::to_string(int(b)) + " m bound");
+			m_pose = p;
 		}
 		else
 		{
-			throw Error(
-				path + ": object #" + std::to_string(c.objects) + " has class " +
-				obj->GetRuntimeClass()->className + ", which does not belong in a rawlog");
+			if (!m_pose) throw core::Error(where + ": whisker sweep has no robot pose before it (no odometry or action)");
+			try
+			{
+				out.obs = deserialize(m_obj.bytes.data() + it.offset, it.size);
+			}
+			catch (const std::exception& e)
+			{
+				throw core::Error(m_label + ": corrupt rawlog at object #" + std::to_string(m_scan->objects() - 1) + ": " +
+								  core::conciseMessage(e));
+			}
+			out.robotPose = *m_pose;
+			return true;
 		}
-		c.objects++;
 	}
-	if (c.objects == 0) throw Error(path + ": holds no objects, not a rawlog");
+}
+
+RawlogReader::Contents RawlogReader::read(const std::string& path)
+{
+	RawlogReader r(path);
+	Contents c;
+	static_cast<Summary&>(c) = r.summary();
+	Sweep s;
+	while (r.next(s)) c.sweeps.push_back(s);
 	return c;
 }
+
+RawlogReader::Contents RawlogReader::forEach(const std::string& path, const std::function<void(const Sweep&)>& onSweep)
+{
+	RawlogReader r(path);
+	Contents c;
+	static_cast<Summary&>(c) = r.summary();
+	Sweep s;
+	while (r.next(s)) onSweep(s);
+	return c;
+}
+}  // namespace whiskermap::obs

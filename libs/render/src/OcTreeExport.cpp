@@ -4,7 +4,9 @@
 #include <whiskermap/core/Error.h>
 #include <whiskermap/render/OcTreeExport.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 namespace whiskermap::render
@@ -33,6 +35,8 @@ class QuietStderr
 };
 }  // namespace
 
+double OcTreeExport::range(double resolution) { return resolution * 32767; }
+
 size_t OcTreeExport::write(const std::vector<world::Table>& tables, const TOptions& o, const std::string& path)
 {
 	octomap::OcTree tree(o.resolution);
@@ -48,16 +52,24 @@ size_t OcTreeExport::write(const std::vector<world::Table>& tables, const TOptio
 		double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
 		for (const auto& c : top.corners)
 			x0 = std::min(x0, c.x()), x1 = std::max(x1, c.x()), y0 = std::min(y0, c.y()), y1 = std::max(y1, c.y());
-		auto first = [&](double v) { return (std::floor(v / r) + 0.5) * r; };
-		for (double x = first(x0); x <= x1; x += r)
-			for (double y = first(y0); y <= y1; y += r)
+		if (std::max({-x0, x1, -y0, y1}) >= range(r))
+			throw core::Error(
+				path + ": a table at (" + std::to_string(t.x) + ", " + std::to_string(t.y) +
+				") lies beyond the octree's range of +-" + std::to_string(range(r)) + " m at resolution " +
+				std::to_string(r) + " m");
+		// Integer voxel indices (a floating-point x += r stops advancing far from the origin).
+		const auto cell = [&](double v) { return static_cast<int64_t>(std::floor(v / r)); };
+		for (int64_t i = cell(x0); (i + 0.5) * r <= x1; i++)
+			for (int64_t j = cell(y0); (j + 0.5) * r <= y1; j++)
 			{
+				const double x = (i + 0.5) * r, y = (j + 0.5) * r;
 				const Eigen::Vector2d p(x, y);
 				if (top.distance(p) > 0) continue;
 				bool inLeg = false;
 				for (const auto& l : legs) inLeg = inLeg || l.distance(p) == 0;
-				for (double z = first(0); z <= o.height; z += r)
+				for (int64_t k = 0; (k + 0.5) * r <= o.height; k++)
 				{
+					const double z = (k + 0.5) * r;
 					const bool inTop = z >= o.height - o.topThickness;
 					if (!inLeg && !inTop) continue;
 					tree.updateNode(octomap::point3d(float(x), float(y), float(z)), true);

@@ -36,12 +36,14 @@ Robot Robot::load(const std::string& path)
 		m.angle = m.sweep_end;
 		r.whiskers.push_back(m);
 	}
-	std::vector<std::string> sections;
-	cfg.getAllSections(sections);
-	for (const auto& s : sections)
-		if (s.rfind("whisker_", 0) == 0 && s.substr(8).find_first_not_of("0123456789") == std::string::npos &&
-			std::stol("0" + s.substr(8)) >= n)
-			throw core::Error(path + ": [" + s + "]: beyond whisker_count=" + std::to_string(n));
+	for (const auto& s : cfg.sectionsInOrder())
+	{
+		if (s.rfind("whisker_", 0) != 0) continue;
+		const long i = core::sectionIndex(s, "whisker_", n);
+		if (i < 0)
+			throw core::Error(core::iniWhere(cfg, s) + "[" + s + "]: not whisker_0 .. whisker_" + std::to_string(n - 1) +
+							  " (whisker_count=" + std::to_string(n) + ", no leading zeros)");
+	}
 	return r;
 }
 

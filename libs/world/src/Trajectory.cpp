@@ -1,5 +1,6 @@
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/core/Error.h>
+#include <whiskermap/core/LineReader.h>
 #include <whiskermap/world/Trajectory.h>
 
 #include <cmath>
@@ -9,42 +10,91 @@
 
 namespace whiskermap::world
 {
+namespace
+{
+class GridSource : public PoseSource
+{
+   public:
+	GridSource(const World& w, int nx, int ny) : m_w(w), m_nx(nx), m_ny(ny)
+	{
+		if (nx < 1 || ny < 1) throw core::Error("paper grid: needs at least 1 x 1 positions");
+	}
+	bool next(mrpt::poses::CPose2D& p) override
+	{
+		if (m_i == size()) return false;
+		const size_t h = m_i % 4, cell = m_i / 4, col = cell % size_t(m_nx), row = cell / size_t(m_nx);
+		const double dx = (m_w.x_max - m_w.x_min) / m_nx, dy = (m_w.y_max - m_w.y_min) / m_ny;
+		p = mrpt::poses::CPose2D(m_w.x_min + (col + 0.5) * dx, m_w.y_min + (row + 0.5) * dy, h * M_PI / 2);
+		m_i++;
+		return true;
+	}
+	void rewind() override { m_i = 0; }
+	size_t size() const override { return 4 * size_t(m_nx) * size_t(m_ny); }
+
+   private:
+	World m_w;
+	int m_nx, m_ny;
+	size_t m_i = 0;
+};
+
+class PathFileSource : public PoseSource
+{
+   public:
+	explicit PathFileSource(const std::string& path) : m_path(path)
+	{
+		mrpt::poses::CPose2D p;
+		while (next(p)) m_size++;  // the whole file checked up front
+		if (m_size == 0) throw core::Error(path + ": path file holds no poses");
+		rewind();
+	}
+	bool next(mrpt::poses::CPose2D& p) override
+	{
+		std::string line;
+		while (m_in->next(line))
+		{
+			const auto b = line.find_first_not_of(" \t");
+			if (b == std::string::npos || line[b] == '%' || line[b] == '#') continue;
+			std::istringstream s(line);
+			double x, y, yawDeg;
+			std::string extra;
+			const double lim = Trajectory::MAX_COORDINATE;
+			if (!(s >> x >> y >> yawDeg) || (s >> extra) || !(std::abs(x) <= lim) || !(std::abs(y) <= lim) ||
+				!(std::abs(yawDeg) <= 3600))
+				throw core::Error(
+					m_in->where() + "expected 'x y yaw_deg' (|x|, |y| <= 1e5 m, |yaw_deg| <= 3600), got '" + line + "'");
+			p = mrpt::poses::CPose2D(x, y, core::deg2rad(yawDeg));
+			return true;
+		}
+		return false;
+	}
+	void rewind() override { m_in = std::make_unique<core::LineReader>(m_path, "path file"); }
+	size_t size() const override { return m_size; }
+
+   private:
+	std::string m_path;
+	std::unique_ptr<core::LineReader> m_in = std::make_unique<core::LineReader>(m_path, "path file");
+	size_t m_size = 0;
+};
+
+std::vector<mrpt::poses::CPose2D> all(PoseSource& s)
+{
+	std::vector<mrpt::poses::CPose2D> v;
+	mrpt::poses::CPose2D p;
+	while (s.next(p)) v.push_back(p);
+	return v;
+}
+}  // namespace
+
 std::vector<mrpt::poses::CPose2D> Trajectory::paperGrid(const World& w, int n) { return paperGrid(w, n, n); }
 
 std::vector<mrpt::poses::CPose2D> Trajectory::paperGrid(const World& w, int nx, int ny)
 {
-	std::vector<mrpt::poses::CPose2D> poses;
-	const double dx = (w.x_max - w.x_min) / nx, dy = (w.y_max - w.y_min) / ny;
-	for (int row = 0; row < ny; row++)
-		for (int col = 0; col < nx; col++)
-			for (int h = 0; h < 4; h++)
-				poses.emplace_back(
-					w.x_min + (col + 0.5) * dx, w.y_min + (row + 0.5) * dy, h * M_PI / 2);
-	return poses;
+	return all(*paperGridSource(w, nx, ny));
 }
 
-std::vector<mrpt::poses::CPose2D> Trajectory::readPathFile(const std::string& path)
+std::unique_ptr<PoseSource> Trajectory::paperGridSource(const World& w, int nx, int ny)
 {
-	std::ifstream f(path);
-	if (!f) throw core::Error(path + ": cannot open path file");
-	std::vector<mrpt::poses::CPose2D> poses;
-	std::string line;
-	for (int lineNo = 1; std::getline(f, line); lineNo++)
-	{
-		const auto b = line.find_first_not_of(" \t\r");
-		if (b == std::string::npos || line[b] == '%' || line[b] == '#') continue;
-		std::istringstream s(line);
-		double x, y, yawDeg;
-		std::string extra;
-		if (!(s >> x >> y >> yawDeg) || (s >> extra) || !std::isfinite(x) || !std::isfinite(y) ||
-			!std::isfinite(yawDeg))
-			throw core::Error(
-				path + ": line " + std::to_string(lineNo) + ": expected 'x y yaw_deg', got '" +
-				line + "'");
-		poses.emplace_back(x, y, core::deg2rad(yawDeg));
-	}
-	if (poses.empty()) throw core::Error(path + ": path file holds no poses");
-	return poses;
+	return std::make_unique<GridSource>(w, nx, ny);
 }
 
 void Trajectory::writePathFile(
@@ -62,4 +112,10 @@ void Trajectory::writePathFile(
 	}
 	if (!f) throw core::Error(path + ": write failed");
 }
+std::unique_ptr<PoseSource> Trajectory::pathFileSource(const std::string& path)
+{
+	return std::make_unique<PathFileSource>(path);
+}
+
+std::vector<mrpt::poses::CPose2D> Trajectory::readPathFile(const std::string& path) { return all(*pathFileSource(path)); }
 }  // namespace whiskermap::world

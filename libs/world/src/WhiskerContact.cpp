@@ -54,12 +54,12 @@ std::optional<WhiskerContact> WhiskerContact::first(
 	};
 	double bestU = INFINITY;
 	std::optional<WhiskerContact> best;
-	auto consider = [&](const Eigen::Vector2d& p, double r, double normalAngle, int obstacle) {
+	auto consider = [&](const Eigen::Vector2d& p, double range, double normalAngle, int index) {
 		const double a = std::atan2(p.y() - pivot.y(), p.x() - pivot.x());
 		const double u = progress(a);
 		if (u > span || u >= bestU) return;
 		bestU = u;
-		best = WhiskerContact{a0 + sgn * u, r, p, normalAngle, obstacle};
+		best = WhiskerContact{a0 + sgn * u, range, p, normalAngle, index};
 	};
 
 	for (size_t i = 0; i < obstacles.size(); i++)

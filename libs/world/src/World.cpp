@@ -3,6 +3,8 @@
 #include <whiskermap/core/IniSection.h>
 #include <whiskermap/world/World.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -32,18 +34,23 @@ World World::load(const std::string& path)
 	if (w.y_max <= w.y_min) arena.fail("y_max", "must be greater than y_min");
 
 	// [table_N] sections, in order of N.
-	std::vector<std::string> sections;
-	cfg.getAllSections(sections);
 	std::map<long, std::string> byIndex;
-	for (const auto& s : sections)
+	for (const auto& s : cfg.sectionsInOrder())
 	{
 		if (s.rfind("table_", 0) != 0) continue;
-		const std::string n = s.substr(6);
-		if (n.empty() || n.find_first_not_of("0123456789") != std::string::npos)
-			throw Error(path + ": [" + s + "]: table sections must be named table_N, N = 0, 1, ...");
-		byIndex[std::stol(n)] = s;
+		const long n = core::sectionIndex(s, "table_", MAX_TABLES);
+		if (n < 0)
+			throw Error(core::iniWhere(cfg, s) + "[" + s + "]: table sections must be named table_N, N = 0, 1, ... " +
+						"(no leading zeros, N < " + std::to_string(MAX_TABLES) + ")");
+		byIndex[n] = s;
 	}
 	std::vector<std::string> names;
+	struct Box
+	{
+		double x0, x1, y0, y1;
+	};
+	std::vector<Obstacle> feet;
+	std::vector<Box> boxes;
 	for (const auto& [index, name] : byIndex)
 	{
 		core::IniSection sec(cfg, name, path);
@@ -62,11 +69,20 @@ World World::load(const std::string& path)
 		for (const auto& c : t.footprint().corners)
 			if (c.x() < w.x_min || c.x() > w.x_max || c.y() < w.y_min || c.y() > w.y_max)
 				sec.fail("", "table lies (partly) outside the arena");
+		// Overlaps: footprints are compared only when their bounding boxes meet (fast on
+		// worlds of thousands of tables).
+		const auto foot = t.footprint();
+		Box b{INFINITY, -INFINITY, INFINITY, -INFINITY};
+		for (const auto& c : foot.corners)
+			b.x0 = std::min(b.x0, c.x()), b.x1 = std::max(b.x1, c.x()), b.y0 = std::min(b.y0, c.y()), b.y1 = std::max(b.y1, c.y());
 		for (size_t j = 0; j < w.tables.size(); j++)
-			if (t.footprint().intersects(w.tables[j].footprint()))
+			if (b.x0 <= boxes[j].x1 && boxes[j].x0 <= b.x1 && b.y0 <= boxes[j].y1 && boxes[j].y0 <= b.y1 &&
+				foot.intersects(feet[j]))
 				sec.fail("", "table overlaps [" + names[j] + "]");
 		w.tables.push_back(t);
 		names.push_back(name);
+		feet.push_back(foot);
+		boxes.push_back(b);
 	}
 	return w;
 }

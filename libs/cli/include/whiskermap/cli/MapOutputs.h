@@ -3,7 +3,9 @@
 #include <whiskermap/cli/OutputDir.h>
 #include <whiskermap/eval/PerPoseEvaluation.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
+#include <whiskermap/eval/Identifiability.h>
 #include <whiskermap/maps/PerPoseCsvWriter.h>
+#include <whiskermap/maps/SimpleMapWriter.h>
 #include <whiskermap/obs/RawlogReader.h>
 #include <whiskermap/render/TopDownImage.h>
 
@@ -29,8 +31,10 @@ class MapOutputs
 		double x0 = 0, x1 = 1, y0 = 0, y1 = 1;  ///< picture bounds, metres
 		int snapshotPose = -1, snapshotTemperature = 0;
 		bool quiet = false;
-		bool simpleMap = false;  ///< also write map.simplemap (keeps every sweep in memory)
+		bool simpleMap = false;  ///< also write map.simplemap (streamed)
 		unsigned jobs = 1;
+		size_t sweeps = 0;  ///< sweeps the run will give (RawlogReader::Summary), for map.simplemap
+		double maxSigmaR = 0;  ///< largest sigma_r of the log, for the identifiability gate
 	};
 
 	MapOutputs(OutputDir& out, const maps::CHierarchicalObjectMap& map, const TSettings& s);
@@ -57,8 +61,10 @@ class MapOutputs
 	Decimator<mrpt::poses::CPose2D> m_path{20000};
 	Decimator<obs::Shapelet> m_shapelets{50000};
 	std::optional<eval::PerPoseEvaluation::Accumulator> m_eval;
-	std::vector<obs::RawlogReader::Sweep> m_kept;  ///< for identifiability or the simple map
-	std::vector<double> m_ms;
+	std::optional<eval::Identifiability::Accumulator> m_ident;
+	std::optional<maps::SimpleMapWriter> m_simpleMap;
+	Decimator<double> m_ms{100000};  ///< step times (an even subset beyond 100000 steps)
+	double m_totalMs = 0;
 	size_t m_steps = 0, m_shapeletCount = 0, m_tables = 0, m_maxTables = 0;
 	uint64_t m_visited = 0, m_board = 0, m_insertions = 0;  ///< lasting mode: local problem sizes
 };

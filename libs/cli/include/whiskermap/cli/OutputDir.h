@@ -1,28 +1,28 @@
 #pragma once
+#include <whiskermap/core/OutputTransaction.h>
+
 #include <string>
-#include <vector>
 
 namespace whiskermap::cli
 {
-/** Writes a set of output files atomically as a group: files go to a hidden staging folder
- *  inside the output folder and are moved into place by commit(); if commit() is never
- *  reached (an error), the staging folder is removed and the output folder keeps exactly
- *  what it had before. */
+/** An app's output folder, written as a group through core::OutputTransaction: files are
+ *  staged and moved into place by commit(); on an error, a signal or a kill the folder keeps
+ *  exactly what it had before (a folder this run created is removed again). */
 class OutputDir
 {
    public:
-	explicit OutputDir(const std::string& dir);  ///< creates dir if needed; throws core::Error
-	~OutputDir();
+	/** Throws core::Error when `dir` is empty or names something that is not a folder. */
+	explicit OutputDir(const std::string& dir);
 
-	/** Path to write `name` to (inside the staging folder). */
+	/** Path to write `name` to (staged). */
 	std::string path(const std::string& name);
 	/** Moves every staged file into the output folder. */
-	void commit();
+	void commit() { m_tx.commit(); }
 	/** Final location of `name`. */
 	std::string finalPath(const std::string& name) const;
 
    private:
-	std::string m_dir, m_stage;
-	std::vector<std::string> m_names;
+	std::string m_dir;
+	core::OutputTransaction m_tx;
 };
 }  // namespace whiskermap::cli

@@ -1,6 +1,6 @@
 #pragma once
-#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileBase.h>
+#include <whiskermap/core/IniFile.h>
 
 #include <memory>
 
@@ -14,7 +14,7 @@ namespace whiskermap::core
  * Every getter checks the value parses completely (a trailing `; comment` is allowed) and is
  * finite; range-checked getters also check bounds. `finish()` then rejects any key in the
  * section that no getter asked for, so a misspelt key is an error, never silently ignored.
- * All errors are core::Error with a one-line message "FILE: [SECTION] KEY: problem". */
+ * All errors are core::Error with a one-line message "FILE: line N: [SECTION] KEY: problem". */
 class IniSection
 {
    public:
@@ -52,16 +52,28 @@ class IniSection
 	std::set<std::string> m_read;
 };
 
-/** Opens an .ini file after checking it exists and every line is blank, a comment
- *  (; or #), a `[section]` or a `key = value`. `kind` names the file in errors
- *  ("world file" -> "x.ini: no such world file", "x.ini: line 3: malformed line '...'"). */
-std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path, const std::string& kind);
+/** Reads an .ini file strictly (IniFile: bounded size, no duplicates, no control bytes, no
+ *  preprocessor syntax, ...). `kind` names the file in errors ("world file" -> "x.ini: no
+ *  such world file", "x.ini: line 3: malformed line '...'"). */
+std::unique_ptr<IniFile> openIniFile(const std::string& path, const std::string& kind);
+
+/** Error-message prefix "FILE: line N: " for a section (and key) when `cfg` is an IniFile
+ *  that has it, else "FILE: ". FILE is `label`, or configLabel(cfg) when empty. */
+std::string iniWhere(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key = "",
+	const std::string& label = "");
 
 /** The file behind a config source (its path for a CConfigFile), for error messages. */
 std::string configLabel(const mrpt::config::CConfigFileBase& cfg);
 
+/** The index N of a section named `prefix` + N, N written without leading zeros and below
+ *  `limit`; -1 when the name is not of that form (so [table_01] and [table_1] cannot both
+ *  name table 1). */
+long sectionIndex(const std::string& section, const std::string& prefix, long limit);
+
 /** Throws if `cfg` has a section not in `allowed` (exact names), or, when `prefix` is not
- *  empty, not starting with it. Used to reject unknown sections in strict files. */
+ *  empty, not starting with it. Used to reject unknown sections in strict files; the error
+ *  names the file and the section's line. */
 void rejectUnknownSections(
 	const mrpt::config::CConfigFileBase& cfg, const std::set<std::string>& allowed,
 	const std::string& prefix, const std::string& fileLabel);

@@ -2,6 +2,7 @@
 #include <whiskermap/world/Table.h>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,7 +10,8 @@ namespace whiskermap::eval
 {
 /** Strict readers of the table CSVs whisker-map writes (doc/evaluation.md): the header must
  *  match exactly, every row has exactly its columns, every value is a finite number in range
- *  (integers where counts or indices are). Errors are core::Error, one line naming the file
+ *  (integers where counts or indices are), lines at most 4096 bytes without control bytes.
+ *  Errors are core::Error, one line naming the file
  *  and line: "map_tables.csv: line 4: column 'x': 'abc' is not a number". */
 class TableCsv
 {
@@ -32,8 +34,24 @@ class TableCsv
 	/** `map_tables.csv` (or `map_candidates.csv`). Ids must be distinct. */
 	static std::vector<MapRow> readMap(const std::string& path);
 
-	/** `per_pose_tables.csv`: element i holds the tables of pose i, for poses 0 .. poses-1
-	 *  (a pose index outside that range is an error naming its line). */
+	/** `per_pose_tables.csv` one pose at a time, in bounded memory: rows must come in pose
+	 *  order (as whisker-map writes them); a pose index out of [0, poses) or out of order is
+	 *  an error naming its line. */
+	class PerPoseReader
+	{
+	   public:
+		PerPoseReader(const std::string& path, size_t poses);
+		~PerPoseReader();
+		/** The tables of the next pose (0, 1, ..., poses - 1); false after the last. */
+		bool next(std::vector<world::Table>& tables);
+
+	   private:
+		struct Impl;
+		std::unique_ptr<Impl> m;
+	};
+
+	/** All of `per_pose_tables.csv`: element i holds the tables of pose i (memory grows
+	 *  with the poses: tests and small files; apps use PerPoseReader). */
 	static std::vector<std::vector<world::Table>> readPerPose(
 		const std::string& path, size_t poses);
 

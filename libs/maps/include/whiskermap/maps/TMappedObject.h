@@ -11,6 +11,6 @@ struct TMappedObject
 	world::Table table;  ///< pose and (known) size
 	double existence = 0;  ///< posterior existence probability (lasting map), or the vote (per-pose mode)
 	uint64_t contacts = 0;  ///< contacts its legs explain (per-pose mode: contacts seen on its legs)
-	uint32_t legs = 0;  ///< distinct legs with at least one contact
+	uint32_t legs = 0;  ///< distinct legs (corners, 0..4) with at least one contact
 };
 }  // namespace whiskermap::maps

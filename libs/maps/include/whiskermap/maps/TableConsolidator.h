@@ -2,6 +2,7 @@
 #include <whiskermap/maps/TMapObject.h>
 #include <whiskermap/obs/Shapelet.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
@@ -40,8 +41,18 @@ class TableConsolidator
 
    private:
 	static constexpr double CELL = 1.0;  ///< grid cell, metres (about a table)
-	static int64_t key(int ix, int iy) { return (int64_t(ix) << 32) ^ uint32_t(iy); }
-	static int cellOf(double v) { return static_cast<int>(std::floor(v / CELL)); }
+	/** Unique for cells within +-2^31 of the origin; beyond, cells may share a key, which
+	 *  costs only time (near() is a superset, filtered by distance). */
+	static int64_t key(int64_t ix, int64_t iy)
+	{
+		return static_cast<int64_t>((static_cast<uint64_t>(ix) << 32) ^ static_cast<uint32_t>(iy));
+	}
+	/** Clamped to +-2^62, so any finite coordinate has a cell and loops over cells end. */
+	static int64_t cellOf(double v)
+	{
+		constexpr double LIM = 4.611686018427387904e18;  // 2^62
+		return static_cast<int64_t>(std::clamp(std::floor(v / CELL), -LIM, LIM));
+	}
 	/** Objects whose centres lie within `radius` of (x, y) (a superset, cell-wise). */
 	void near(double x, double y, double radius, std::vector<uint32_t>& out) const;
 	void index(uint32_t i);

@@ -1,6 +1,7 @@
 #pragma once
 #include <whiskermap/model/Id.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
@@ -10,8 +11,8 @@ namespace whiskermap::model
 {
 /** Points (ids) on a uniform grid of square cells kept in a hash map that grows with the
  *  number of occupied cells: for maps of any size (the lasting map's store), where
- *  SpatialHash's fixed buckets suit small, often reset blackboards. Cell indices are 64-bit,
- *  so any finite coordinate below 1e15 cell sizes is safe. */
+ *  SpatialHash's fixed buckets suit small, often reset blackboards. Cell indices are 64-bit
+ *  and clamped. */
 class SpatialGrid
 {
    public:
@@ -47,7 +48,12 @@ class SpatialGrid
 									   static_cast<uint64_t>(k.iy) * 0xC2B2AE3D27D4EB4Full);
 		}
 	};
-	int64_t cell(double v) const { return static_cast<int64_t>(std::floor(v / m_cellSize)); }
+	/** Clamped to +-2^62 (as SpatialHash): any finite coordinate has a cell, loops end. */
+	int64_t cell(double v) const
+	{
+		constexpr double LIM = 4.611686018427387904e18;  // 2^62
+		return static_cast<int64_t>(std::clamp(std::floor(v / m_cellSize), -LIM, LIM));
+	}
 
 	double m_cellSize;
 	std::unordered_map<Key, std::vector<Id>, KeyHash> m_cells;

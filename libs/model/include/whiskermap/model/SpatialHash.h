@@ -1,6 +1,7 @@
 #pragma once
 #include <whiskermap/model/Id.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -44,7 +45,13 @@ class SpatialHash
 		Id id;
 		int32_t next;  ///< next node of the bucket (or of the free list), -1 at the end
 	};
-	int64_t cell(double v) const { return static_cast<int64_t>(std::floor(v / m_cellSize)); }
+	/** 64-bit cell index, clamped to +-2^62 so that any finite coordinate has a cell and
+	 *  the query loops above always end (indices and their +1 never overflow). */
+	int64_t cell(double v) const
+	{
+		constexpr double LIM = 4.611686018427387904e18;  // 2^62
+		return static_cast<int64_t>(std::clamp(std::floor(v / m_cellSize), -LIM, LIM));
+	}
 	size_t bucket(int64_t ix, int64_t iy) const
 	{
 		const uint64_t h = static_cast<uint64_t>(ix) * 0x9E3779B97F4A7C15ull ^ static_cast<uint64_t>(iy) * 0xC2B2AE3D27D4EB4Full;

@@ -24,6 +24,8 @@ class CObservationWhiskerContacts : public mrpt::obs::CObservation
    public:
 	/** Upper bound on whiskers per sweep accepted by validate(); far above any real array. */
 	static constexpr size_t MAX_WHISKERS = 1024;
+	/** Longest sensor label a stored sweep may hold (printable ASCII). */
+	static constexpr size_t MAX_LABEL = 256;
 
 	mrpt::poses::CPose3D sensorPose;  ///< whisker-array frame on the robot (planar: x, y, yaw)
 	std::vector<TWhisker> whiskers;  ///< one entry per whisker, touched or not

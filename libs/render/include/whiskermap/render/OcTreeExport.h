@@ -20,8 +20,11 @@ struct OcTreeExport
 		double topThickness = 0.03;  ///< metres
 	};
 
+	/** OctoMap's 16-bit keys span +-range(resolution) metres around the origin. */
+	static double range(double resolution);
+
 	/** Writes via a temporary file; returns the number of occupied voxels inserted.
-	 *  Throws core::Error if the file cannot be written. */
+	 *  Throws core::Error if the file cannot be written or a table lies beyond range(). */
 	static size_t write(const std::vector<world::Table>& tables, const TOptions& o, const std::string& path);
 };
 }  // namespace whiskermap::render

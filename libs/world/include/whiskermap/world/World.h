@@ -11,6 +11,9 @@ namespace whiskermap::world
  *  simulator senses and an evaluation compares against. See doc/formats.md for the .ini. */
 struct World
 {
+	/** Most tables a world file may hold ([table_0] .. [table_99999]). */
+	static constexpr long MAX_TABLES = 100000;
+
 	double x_min = 0, x_max = 0, y_min = 0, y_max = 0;  ///< walls stand on these edges, metres
 	double wall_texture = 0.3;  ///< texture of the walls (optional key in [arena])
 	std::vector<Table> tables;
