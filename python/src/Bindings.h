@@ -7,11 +7,15 @@
 #include <pybind11/pybind11.h>
 
 #include <array>
+#include <filesystem>
 #include <vector>
 
 namespace whiskermap::python
 {
 namespace py = pybind11;
+
+/** A file path argument: a str or any os.PathLike (pathlib.Path). */
+using Path = std::filesystem::path;
 
 /** A planar pose as Python sees it: (x, y, yaw), metres and radians. */
 using Pose = std::array<double, 3>;

@@ -1,5 +1,6 @@
 // The evaluation against ground truth: whisker-eval's figures (doc/evaluation.md).
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 #include <whiskermap/eval/EvalReport.h>
 #include <whiskermap/eval/TableCsv.h>
 
@@ -116,11 +117,11 @@ void bindEval(py::module_& m)
 		  "whisker-eval in a call: tables (a map's map_tables() or map_objects()) scored against the world; "
 		  "per_pose (a table array per sweep) adds the per-pose figures; rawlog (read_rawlog) adds the "
 		  "identifiability bound and the robot positions of the 'local' per-pose figures.");
-	m.def("read_map_csv", [](const std::string& path) { return toArray(TableCsv::tables(TableCsv::readMap(path))); },
+	m.def("read_map_csv", [](const Path& path) { return toArray(TableCsv::tables(TableCsv::readMap(path.string()))); },
 		  py::arg("path"), "The tables of a map_tables.csv, read strictly as whisker-eval does (TABLE_DTYPE).");
-	m.def("read_per_pose_csv", [](const std::string& path, size_t poses) {
+	m.def("read_per_pose_csv", [](const Path& path, size_t poses) {
 		std::vector<py::array> out;
-		for (const auto& t : TableCsv::readPerPose(path, poses)) out.push_back(toArray(t));
+		for (const auto& t : TableCsv::readPerPose(path.string(), poses)) out.push_back(toArray(t));
 		return out;
 	}, py::arg("path"), py::arg("poses"), "A per_pose_tables.csv: a TABLE_DTYPE array per pose, poses 0 .. poses-1.");
 }

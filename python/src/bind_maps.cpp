@@ -3,6 +3,7 @@
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/serialization/CArchive.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/maps/MapConfig.h>
@@ -35,9 +36,8 @@ TMode parseMode(const std::string& mode)
 class Map
 {
    public:
-	Map(const std::optional<std::string>& config, const std::optional<std::string>& mode,
-		const std::optional<uint64_t> seed)
-		: m_config(config ? *config : core::ConfigPaths::find("whisker-map.ini")),
+	Map(const std::optional<Path>& config, const std::optional<std::string>& mode, const std::optional<uint64_t> seed)
+		: m_config(config ? config->string() : core::ConfigPaths::find("whisker-map.ini")),
 		  m_multimap(std::make_unique<mrpt::maps::CMultiMetricMap>(maps::MapConfig::load(m_config)))
 	{
 		attach();
@@ -93,7 +93,7 @@ py::bytes toBytes(const Map& map)
 	return py::bytes(data);
 }
 
-std::unique_ptr<Map> fromBytes(const py::bytes& bytes, const std::optional<std::string>& config)
+std::unique_ptr<Map> fromBytes(const py::bytes& bytes, const std::optional<Path>& config)
 {
 	auto map = std::make_unique<Map>(config, std::nullopt, std::nullopt);
 	const std::string data = bytes;
@@ -130,7 +130,7 @@ void bindMaps(py::module_& m)
 					"shipped config/whisker-map.ini) holding a CHierarchicalObjectMap (doc/map-plugin.md). mode: "
 					"'lasting' (one state fusing every contact) or 'per_pose' (the paper's steps, merged by votes); "
 					"seed: the base seed. Same config, mode, seed and sweeps: the same map as whisker-map.")
-		.def(py::init<const std::optional<std::string>&, const std::optional<std::string>&, std::optional<uint64_t>>(),
+		.def(py::init<const std::optional<Path>&, const std::optional<std::string>&, std::optional<uint64_t>>(),
 			 py::arg("config") = py::none(), py::arg("mode") = py::none(), py::arg("seed") = py::none())
 		.def_property_readonly("config", &Map::config, "the config file it was built from")
 		.def_property("mode",
@@ -187,8 +187,8 @@ void bindMaps(py::module_& m)
 		.def("is_empty", [](const Map& mp) { return mp.read([](const CHierarchicalObjectMap& x) { return x.isEmpty(); }); })
 		.def("describe", [](const Map& mp) { return mp.read([](const CHierarchicalObjectMap& x) { return x.asString(); }); })
 		.def("__str__", [](const Map& mp) { return mp.read([](const CHierarchicalObjectMap& x) { return x.asString(); }); })
-		.def("save", [](const Map& mp, const std::string& prefix) {
-			mp.read([&](const CHierarchicalObjectMap& x) { return x.saveMetricMapRepresentationToFile(prefix), 0; });
+		.def("save", [](const Map& mp, const Path& prefix) {
+			mp.read([&](const CHierarchicalObjectMap& x) { return x.saveMetricMapRepresentationToFile(prefix.string()), 0; });
 		}, py::arg("prefix"),
 			"Writes <prefix>_map_tables.csv, <prefix>_map_candidates.csv and, per-pose mode, <prefix>_per_pose_tables.csv.")
 		.def("to_bytes", &toBytes, "The CHierarchicalObjectMap, MRPT-serialized (its class, version and content).")
@@ -198,12 +198,12 @@ void bindMaps(py::module_& m)
 		.def("__copy__", [](const Map& mp) { return std::make_unique<Map>(mp); })
 		.def("__deepcopy__", [](const Map& mp, const py::dict&) { return std::make_unique<Map>(mp); }, py::arg("memo"));
 
-	m.def("write_objects_csv", [](const std::string& path, const py::handle& objects) {
-		maps::MapCsv::writeObjects(path, fromArray<maps::TMappedObject>(objects, "objects"));
+	m.def("write_objects_csv", [](const Path& path, const py::handle& objects) {
+		maps::MapCsv::writeObjects(path.string(), fromArray<maps::TMappedObject>(objects, "objects"));
 	}, py::arg("path"), py::arg("objects"),
 		  "map_tables.csv as whisker-map writes it (maps::MapCsv::writeObjects), from an OBJECT_DTYPE array.");
-	m.def("write_per_pose_csv", [](const std::string& path, const std::vector<maps::TPoseRecord>& records) {
-		maps::MapCsv::writePerPose(path, records);
+	m.def("write_per_pose_csv", [](const Path& path, const std::vector<maps::TPoseRecord>& records) {
+		maps::MapCsv::writePerPose(path.string(), records);
 	}, py::arg("path"), py::arg("records"),
 		  "per_pose_tables.csv as whisker-map writes it (maps::MapCsv::writePerPose), from PoseRecords.");
 }

@@ -2,6 +2,7 @@
 #include <mrpt/system/datetime.h>
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 #include <whiskermap/obs/RawlogReader.h>
 #include <whiskermap/world/NoisePreset.h>
 #include <whiskermap/world/RawlogWriter.h>
@@ -47,12 +48,12 @@ py::tuple sweepAt(const Contents& c, py::ssize_t i)
 class Writer
 {
    public:
-	Writer(const std::string& path, const std::string& format, bool groundTruth) : m_path(path)
+	Writer(const Path& path, const std::string& format, bool groundTruth) : m_path(path.string())
 	{
 		if (format != "obs" && format != "action-sf")
 			throw core::Error("format '" + format + "': expected 'obs' or 'action-sf'");
 		m_w.emplace(
-			path,
+			m_path,
 			format == "obs" ? world::RawlogWriter::Format::Observations
 							: world::RawlogWriter::Format::ActionSensoryFrame,
 			groundTruth ? world::RawlogWriter::GroundTruth::Write : world::RawlogWriter::GroundTruth::None);
@@ -85,7 +86,7 @@ void bindObs(py::module_& m)
 		.def_readwrite("sigma_r", &obs::TSensorNoise::sigma_r, "radial distance, metres")
 		.def_readwrite("sigma_phi", &obs::TSensorNoise::sigma_phi, "surface-normal angle, radians")
 		.def_readwrite("sigma_tau", &obs::TSensorNoise::sigma_tau, "texture, in [0, 1]")
-		.def_static("load", &world::NoisePreset::load, py::arg("name_or_path"),
+		.def_static("load", [](const Path& p) { return world::NoisePreset::load(p.string()); }, py::arg("name_or_path"),
 					"A noise .ini, or a shipped preset name: noiseless, default, very-noisy (NoisePreset).")
 		.def("__repr__", [](const obs::TSensorNoise& n) {
 			std::ostringstream s;
@@ -140,14 +141,14 @@ void bindObs(py::module_& m)
 		.def("__len__", [](const Contents& c) { return c.sweeps.size(); })
 		.def("__getitem__", &sweepAt);
 
-	m.def("read_rawlog", [](const std::string& path) {
+	m.def("read_rawlog", [](const Path& path) {
 		py::gil_scoped_release nogil;
-		return obs::RawlogReader::read(path);
+		return obs::RawlogReader::read(path.string());
 	}, py::arg("path"), "Reads a rawlog (either MRPT layout) into memory (obs::RawlogReader::read).");
 
-	m.def("for_each_sweep", [](const std::string& path, const std::function<void(Pose, std::shared_ptr<Obs>)>& fn) {
+	m.def("for_each_sweep", [](const Path& path, const std::function<void(Pose, std::shared_ptr<Obs>)>& fn) {
 		py::gil_scoped_release nogil;
-		return obs::RawlogReader::forEach(path, [&](const obs::RawlogReader::Sweep& s) {
+		return obs::RawlogReader::forEach(path.string(), [&](const obs::RawlogReader::Sweep& s) {
 			py::gil_scoped_acquire gil;
 			fn(fromPose2D(s.robotPose), s.obs);
 		}).sweepCount;
@@ -160,7 +161,7 @@ void bindObs(py::module_& m)
 					   "(odometry + observations) or 'action-sf' (actions + sensory frames, for rbpf-slam); "
 					   "ground_truth writes <name>_ground_truth_robot_path.txt beside it. Nothing appears until "
 					   "close(); as a context manager it closes on success and removes everything on an exception.")
-		.def(py::init<const std::string&, const std::string&, bool>(), py::arg("path"), py::arg("format") = "obs",
+		.def(py::init<const Path&, const std::string&, bool>(), py::arg("path"), py::arg("format") = "obs",
 			 py::arg("ground_truth") = true)
 		.def("write", &Writer::write, py::arg("pose"), py::arg("sweep"))
 		.def("close", &Writer::close)

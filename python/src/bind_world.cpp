@@ -1,6 +1,7 @@
 // Ground truth and simulation: worlds, robots, the whisker simulator, trajectories.
 #include <mrpt/system/datetime.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/world/Robot.h>
 #include <whiskermap/world/Trajectory.h>
@@ -23,8 +24,9 @@ void bindWorld(py::module_& m)
 		  "tree's config/, then the installed share/whiskermap/config (core::ConfigPaths::find).");
 
 	py::class_<World>(m, "World", "An arena walled on its edges and its tables: ground truth (world::World).")
-		.def_static("load", &World::load, py::arg("path"), "Reads and validates a world .ini (doc/formats.md).")
-		.def("save", &World::save, py::arg("path"), py::arg("comment") = "")
+		.def_static("load", [](const Path& p) { return World::load(p.string()); }, py::arg("path"), "Reads and validates a world .ini (doc/formats.md).")
+		.def("save", [](const World& w, const Path& p, const std::string& comment) { w.save(p.string(), comment); },
+			 py::arg("path"), py::arg("comment") = "")
 		.def("tiled", &World::tiled, py::arg("nx"), py::arg("ny"), "This world repeated nx by ny times.")
 		.def_readonly("x_min", &World::x_min)
 		.def_readonly("x_max", &World::x_max)
@@ -34,7 +36,7 @@ void bindWorld(py::module_& m)
 		.def_property_readonly("tables", [](const World& w) { return toArray(w.tables); }, "TABLE_DTYPE array");
 
 	py::class_<Robot>(m, "Robot", "A whiskered robot's geometry: body radius and whisker mountings (world::Robot).")
-		.def_static("load", [](const std::string& arg) { return Robot::load(core::ConfigPaths::resolve(arg, "robots")); },
+		.def_static("load", [](const Path& arg) { return Robot::load(core::ConfigPaths::resolve(arg.string(), "robots")); },
 					py::arg("name_or_path"), "A robot .ini, or a shipped robot name such as 'scratchbot'.")
 		.def_readonly("radius", &Robot::radius)
 		.def_property_readonly("sensor_pose", [](const Robot& r) { return fromPose3D(r.sensorPose); })
@@ -67,10 +69,10 @@ void bindWorld(py::module_& m)
 		  "The paper's poses: n x n cell centres row by row, each at headings 0, 90, 180, 270 degrees.");
 	m.def("paper_grid", [](const World& w, int nx, int ny) { return posesToArray(Trajectory::paperGrid(w, nx, ny)); },
 		  py::arg("world"), py::arg("nx"), py::arg("ny"));
-	m.def("read_path_file", [](const std::string& path) { return posesToArray(Trajectory::readPathFile(path)); },
+	m.def("read_path_file", [](const Path& path) { return posesToArray(Trajectory::readPathFile(path.string())); },
 		  py::arg("path"), "A path file: one 'x y yaw_deg' per line (doc/formats.md); (n, 3) array, yaw in radians.");
-	m.def("write_path_file", [](const std::string& path, const py::handle& poses, const std::string& comment) {
-		Trajectory::writePathFile(path, posesFromArray(poses), comment);
+	m.def("write_path_file", [](const Path& path, const py::handle& poses, const std::string& comment) {
+		Trajectory::writePathFile(path.string(), posesFromArray(poses), comment);
 	}, py::arg("path"), py::arg("poses"), py::arg("comment") = "");
 }
 }  // namespace whiskermap::python

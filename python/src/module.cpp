@@ -1,5 +1,6 @@
 // import whiskermap: Python bindings of the whiskermap libraries (doc/python.md).
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/core/conciseMessage.h>
 

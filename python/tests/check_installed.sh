@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # check_installed.sh BUILD_DIR PYTHON MODULE_DIR WORK_DIR: installs whiskermap into a scratch
-# prefix and imports the installed module from there (its libraries found through its RPATH,
-# the shipped config through the installed share/whiskermap/config).
+# prefix and imports the installed module from there: its libraries are found through its
+# relative RPATH, and it builds a map from the installed share/whiskermap/config.
 set -euo pipefail
 build=$1 python=$2 moddir=$3 work=$4
 rm -rf "$work"; mkdir -p "$work"
@@ -15,4 +15,4 @@ m = wm.Map()
 print(wm.__version__, m.config, m.mode)')
 echo "$out"
 [[ "$out" == *" $work/prefix/share/whiskermap/config/whisker-map.ini lasting" ]]
-echo "ok: the installed module imports and finds its installed config"
+echo "ok: the installed module imports and maps with the installed config"

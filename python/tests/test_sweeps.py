@@ -10,7 +10,7 @@ WHISKER_FIELDS = ("mount_x", "mount_y", "sweep_start", "sweep_end", "length",
 
 @pytest.fixture(scope="module")
 def rawlog(dataset):
-    return wm.read_rawlog(str(dataset))
+    return wm.read_rawlog(dataset)
 
 
 def test_reads_the_shipped_dataset(rawlog):
@@ -49,7 +49,7 @@ def test_shapelets_are_the_touched_whiskers_in_the_world_frame(rawlog):
 
 def test_rewriting_the_sweeps_gives_the_same_bytes(rawlog, dataset, tmp_path):
     out = tmp_path / "copy.rawlog"
-    with wm.RawlogWriter(str(out)) as writer:
+    with wm.RawlogWriter(out) as writer:
         for pose, sweep in rawlog:
             writer.write(pose, sweep)
     assert out.read_bytes() == dataset.read_bytes()
@@ -91,7 +91,7 @@ def test_packed_arrays_and_other_field_orders_are_accepted(rawlog):
 def test_a_failed_write_leaves_no_file(rawlog, tmp_path):
     out = tmp_path / "failed.rawlog"
     with pytest.raises(RuntimeError, match="stop"):
-        with wm.RawlogWriter(str(out)) as writer:
+        with wm.RawlogWriter(out) as writer:
             writer.write(*rawlog[0])
             raise RuntimeError("stop")
     assert list(tmp_path.iterdir()) == []
@@ -101,14 +101,14 @@ def test_a_failed_write_leaves_no_file(rawlog, tmp_path):
 
 def test_streaming_visits_every_sweep_in_order(rawlog, dataset):
     seen = []
-    count = wm.for_each_sweep(str(dataset), lambda pose, sweep: seen.append(pose))
+    count = wm.for_each_sweep(dataset, lambda pose, sweep: seen.append(pose))
     assert count == len(seen) == 400
     assert np.array_equal(np.array(seen), rawlog.poses)
 
     def stop(pose, sweep):
         raise KeyError("from the callback")
     with pytest.raises(KeyError, match="from the callback"):
-        wm.for_each_sweep(str(dataset), stop)
+        wm.for_each_sweep(dataset, stop)
 
 
 def test_blank_sweep_of_a_robot():

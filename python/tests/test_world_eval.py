@@ -9,7 +9,7 @@ import whiskermap as wm
 
 @pytest.fixture(scope="module")
 def arena(src):
-    return wm.World.load(str(src / "config" / "worlds" / "paper_arena.ini"))
+    return wm.World.load(src / "config" / "worlds" / "paper_arena.ini")
 
 
 def test_world_tables(arena):
@@ -58,8 +58,8 @@ def test_paths(arena, tmp_path):
     assert grid.shape == (400, 3)
     assert np.allclose(np.degrees(grid[:4, 2]) % 360, [0, 90, 180, 270])
     assert wm.paper_grid(arena, 3, 2).shape == (24, 3)
-    wm.write_path_file(str(tmp_path / "p.txt"), grid[:10], comment="ten poses")
-    back = wm.read_path_file(str(tmp_path / "p.txt"))
+    wm.write_path_file(tmp_path / "p.txt", grid[:10], comment="ten poses")
+    back = wm.read_path_file(tmp_path / "p.txt")
     assert np.allclose(back, grid[:10], atol=1e-9)
 
 
