@@ -3,13 +3,14 @@
 # Idempotent: packages already installed are skipped, and apt is not touched at all
 # when everything is present. Usage: scripts/install-deps.sh [--tools]
 #   --tools  also install the stock MRPT / OctoMap tools used by the tests
-#            (rawlog-edit, pf-localization, convert_octree) and python3 (scripts/eval-categories.sh).
+#            (rawlog-edit, pf-localization, convert_octree), python3 (scripts/eval-categories.sh),
+#            pytest and matplotlib (the Python module's tests and example).
 set -euo pipefail
 
 build_pkgs=(cmake g++ make pkg-config libmrpt-maps-dev libmrpt-slam-dev
             libeigen3-dev liboctomap-dev libgtest-dev libbenchmark-dev libcli11-dev
-            nlohmann-json3-dev clang libclang-rt-14-dev)
-tool_pkgs=(mrpt-apps octomap-tools python3)
+            nlohmann-json3-dev clang libclang-rt-14-dev python3-dev pybind11-dev python3-numpy)
+tool_pkgs=(mrpt-apps octomap-tools python3 python3-pytest python3-matplotlib)
 
 want=("${build_pkgs[@]}")
 [[ "${1:-}" == "--tools" ]] && want+=("${tool_pkgs[@]}")

@@ -12,7 +12,7 @@ seconds=30
 [[ "${1:-}" == "--fuzz-seconds" ]] && seconds=$2
 
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DWHISKERMAP_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DWHISKERMAP_BUILD_BENCHMARKS=OFF >/dev/null
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DWHISKERMAP_BUILD_BENCHMARKS=OFF -DWHISKERMAP_BUILD_PYTHON=OFF >/dev/null
 cmake --build "$build" -j "${JOBS:-2}"
 
 runtime=$(clang++ -print-file-name=libclang_rt.asan-x86_64.so)
