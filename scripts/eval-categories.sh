@@ -9,7 +9,7 @@
 # Usage: scripts/eval-categories.sh [BUILD_DIR] [OUT_DIR]
 #   BUILD_DIR  where whiskermap was built (default: build)
 #   OUT_DIR    where to write (default: out/eval-categories)
-# Environment (to run a subset): CATEGORIES (default: paper_arena random_yaw clutter
+# Environment: MAP_CONFIG (whisker-map's -c), and to run a subset: CATEGORIES (default: paper_arena random_yaw clutter
 #   side_by_side large sparse), SEEDS (default: 1 2 3 4 5), NOISES (default: noiseless default
 #   very-noisy).
 set -euo pipefail
@@ -19,6 +19,8 @@ out=${2:-$root/out/eval-categories}
 categories=${CATEGORIES:-paper_arena random_yaw clutter side_by_side large sparse}
 seeds=${SEEDS:-1 2 3 4 5}
 noises=${NOISES:-noiseless default very-noisy}
+map_args=()  # MAP_CONFIG: whisker-map's config (default: the shipped config/whisker-map.ini)
+[[ -n "${MAP_CONFIG:-}" ]] && map_args=(-c "$MAP_CONFIG")
 sim="$build/apps/whisker-sim/whisker-sim" map="$build/apps/whisker-map/whisker-map"
 base="$build/apps/whisker-baseline/whisker-baseline" evl="$build/apps/whisker-eval/whisker-eval"
 helper="$root/scripts/eval_categories.py"
@@ -71,14 +73,14 @@ for r in "${runs[@]}"; do
     "$sim" -q -w "$world" --path "$source" --noise "$noise" --seed "$seed" -o "$rawlog"
   fi
   echo -n "[$i/${#runs[@]}] $category seed $seed $noise:"
-  score whisker-map "$dir/map" "$map" -q --jobs 1 -i "$rawlog" --world "$world" -o "$dir/map"
+  score whisker-map "$dir/map" "$map" "${map_args[@]}" -q --jobs 1 -i "$rawlog" --world "$world" -o "$dir/map"
   # The map whisker-map evaluates itself (metrics.json), as long as it differs from map_tables.csv.
   if [[ -f "$dir/map/metrics.json" ]] && grep -q '"f1"' "$dir/map/metrics.json"; then
     printf '%s\t%s\t%s\t%s\t%s\t%s\t\n' "$category" "$seed" "$noise" whisker-map-as-used "$dir/map" "$dir/map/metrics.json" >> "$manifest"
   fi
   score baseline "$dir/baseline" "$base" -q -i "$rawlog" -o "$dir/baseline"
   if [[ $reverse == yes && $noise == default ]]; then
-    score whisker-map-reversed "$dir/map-reversed" "$map" -q --jobs 1 --reverse -i "$rawlog" --world "$world" -o "$dir/map-reversed"
+    score whisker-map-reversed "$dir/map-reversed" "$map" "${map_args[@]}" -q --jobs 1 --reverse -i "$rawlog" --world "$world" -o "$dir/map-reversed"
   fi
   echo
 done
