@@ -23,8 +23,9 @@ std::vector<mrpt::poses::CPose2D> Trajectory::paperGrid(const World& w, int nx, 
 	return poses;
 }
 
-std::vector<mrpt::poses::CPose2D> Trajectory::readPathFile(const std::string& path)
+std::vector<mrpt::poses::CPose2D> Trajectory::readPathFile(const std::string& path, std::vector<int>* lines)
 {
+	if (lines) lines->clear();
 	std::ifstream f(path);
 	if (!f) throw core::Error(path + ": cannot open path file");
 	std::vector<mrpt::poses::CPose2D> poses;
@@ -42,6 +43,7 @@ std::vector<mrpt::poses::CPose2D> Trajectory::readPathFile(const std::string& pa
 				path + ": line " + std::to_string(lineNo) + ": expected 'x y yaw_deg', got '" +
 				line + "'");
 		poses.emplace_back(x, y, core::deg2rad(yawDeg));
+		if (lines) lines->push_back(lineNo);
 	}
 	if (poses.empty()) throw core::Error(path + ": path file holds no poses");
 	return poses;

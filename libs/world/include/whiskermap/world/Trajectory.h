@@ -18,8 +18,10 @@ struct Trajectory
 	static std::vector<mrpt::poses::CPose2D> paperGrid(const World& world, int nx, int ny);
 
 	/** A path file: one pose per line, `x y yaw_deg` (metres, degrees); blank lines and lines
-	 *  starting with '%' or '#' are skipped. Throws core::Error naming file and line. */
-	static std::vector<mrpt::poses::CPose2D> readPathFile(const std::string& path);
+	 *  starting with '%' or '#' are skipped. Throws core::Error naming file and line.
+	 *  `lines` (optional) receives each pose's line number, for later errors. */
+	static std::vector<mrpt::poses::CPose2D> readPathFile(
+		const std::string& path, std::vector<int>* lines = nullptr);
 	/** Writes a path file that readPathFile reads back to the same poses (to 1e-9 m and
 	 *  degrees); each line of `comment` becomes a `# ` line at the top. Throws core::Error. */
 	static void writePathFile(
