@@ -78,7 +78,7 @@ int run(const Options& o)
 	// Fixed, synthetic clock: one sweep every 1/rate s from a fixed epoch (reproducible bytes).
 	const double t0 = 1300000000.0;
 	RawlogWriter out(o.out, RawlogFormatOption::parse(o.format));
-	out.setMotionModel(odometryNoise.motionModel);
+	out.setMotionModel([&](const mrpt::poses::CPose2D& increment) { return odometryNoise.motionModel(increment); });
 	std::optional<PathLog::Writer> odometryPath;
 	if (!odometryNoise.exact())
 		odometryPath.emplace(
@@ -170,9 +170,9 @@ int WhiskerSimApp::main(int argc, char** argv)
 		->capture_default_str();
 	app.add_option(
 		   "--odometry", o.odometry,
-		   "Odometry noise: exact (odometry = truth), default (5% translation, 2 deg/m rotation, "
-		   "1% scale bias), poor (twice that) (config/odometry/) or a .ini; also sets the motion "
-		   "model of action-sf actions")
+		   "Odometry noise: exact (odometry = truth), default (5% translation and 2 degrees of "
+		   "heading error per metre, random walks, and a 1% scale bias), poor (twice that) "
+		   "(config/odometry/) or a .ini; also sets the motion model of action-sf actions")
 		->capture_default_str();
 	app.add_option(
 		   "--seed", o.seed,

@@ -3,22 +3,39 @@
 #include <whiskermap/core/IniSection.h>
 #include <whiskermap/world/OdometryNoise.h>
 
+#include <cmath>
+
 namespace whiskermap::world
 {
 using Options = mrpt::obs::CActionRobotMovement2D::TMotionModelOptions;
 
 bool OdometryNoise::exact() const
 {
-	return translation_noise == 0 && translation_noise_per_turn == 0 && rotation_noise == 0 &&
-		   rotation_noise_per_turn == 0 && scale_bias == 0;
+	return translation_noise == 0 && rotation_noise == 0 && turn_noise == 0 && turn_translation_noise == 0 &&
+		   scale_bias == 0;
 }
 
-Options OdometryNoise::noiseModel() const
+double OdometryNoise::sigmaXY(double d, double dphi) const
+{
+	return translation_noise * std::sqrt(d) + turn_translation_noise * std::sqrt(std::abs(dphi));
+}
+
+double OdometryNoise::sigmaPhi(double d, double dphi) const
+{
+	return rotation_noise * std::sqrt(d) + turn_noise * std::sqrt(std::abs(dphi));
+}
+
+Options OdometryNoise::motionModel(const mrpt::poses::CPose2D& increment) const
 {
 	Options o;
+	if (!matched_model) return o;
+	// Per unit of this step's motion: k sqrt(x) = (k / sqrt(x)) x (doc/sensor-model.md, "Odometry").
+	const double d = increment.norm(), turn = std::abs(increment.phi());
+	auto perUnit = [](double k, double x) { return x > 0 ? k / std::sqrt(x) : 0.0; };
 	o.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
 	o.gaussianModel = Options::TOptions_GaussianModel(
-		translation_noise, translation_noise_per_turn, rotation_noise, rotation_noise_per_turn, 0, 0);
+		perUnit(translation_noise, d) + std::abs(scale_bias), perUnit(turn_translation_noise, turn),
+		perUnit(rotation_noise, d), perUnit(turn_noise, turn), min_std_xy, min_std_phi);
 	return o;
 }
 
@@ -30,23 +47,17 @@ OdometryNoise OdometryNoise::load(const std::string& nameOrPath)
 	core::rejectUnknownSections(cfg, {"odometry", "motion_model"}, "", path);
 	OdometryNoise n;
 	core::IniSection sec(cfg, "odometry", path);
-	n.translation_noise = sec.number("translation_noise", 0, 1);
-	n.translation_noise_per_turn = sec.number("translation_noise_per_turn", 0, 1);
-	n.rotation_noise = core::deg2rad(sec.number("rotation_noise_deg_per_m", 0, 90));
-	n.rotation_noise_per_turn = sec.number("rotation_noise_per_turn", 0, 1);
+	n.translation_noise = sec.number("translation_noise", 0, 10);
+	n.rotation_noise = core::deg2rad(sec.number("rotation_noise_deg", 0, 90));
+	n.turn_noise = sec.number("turn_noise", 0, 1);
+	n.turn_translation_noise = sec.number("turn_translation_noise", 0, 10);
 	n.scale_bias = sec.number("scale_bias", -0.5, 0.5);
 	sec.finish();
-	if (!cfg.sectionExists("motion_model")) return n;  // MRPT's default model
-
+	if (!cfg.sectionExists("motion_model")) return n;
 	core::IniSection mm(cfg, "motion_model", path);
-	auto& g = n.motionModel.gaussianModel;
-	n.motionModel.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
-	g.a1 = mm.number("a1", 0, 1);
-	g.a2 = mm.number("a2", 0, 1);
-	g.a3 = core::deg2rad(mm.number("a3_deg_per_m", 0, 90));
-	g.a4 = mm.number("a4", 0, 1);
-	g.minStdXY = mm.number("min_std_xy", 0, 1);
-	g.minStdPHI = core::deg2rad(mm.number("min_std_phi_deg", 0, 90));
+	n.matched_model = true;
+	n.min_std_xy = mm.number("min_std_xy", 0, 1);
+	n.min_std_phi = core::deg2rad(mm.number("min_std_phi_deg", 0, 90));
 	mm.finish();
 	return n;
 }

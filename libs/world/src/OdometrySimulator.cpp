@@ -17,14 +17,11 @@ OdometrySimulator::OdometrySimulator(OdometryNoise noise, uint64_t seed)
 
 mrpt::poses::CPose2D OdometrySimulator::corrupt(const mrpt::poses::CPose2D& u)
 {
-	const auto& n = m_noise;
-	const double s = 1 + n.scale_bias, x = s * u.x(), y = s * u.y(), phi = u.phi();
-	// MRPT's Gaussian odometry model (CActionRobotMovement2D::computeFromOdometry_modelGaussian):
-	// std_xy = a1 d + a2 |dphi|, std_phi = a3 d + a4 |dphi|, cov = J diag(std_xy^2, std_xy^2, std_phi^2) J^T,
-	// J = [R(dphi/2) | d(x, y)/d(phi)]: draw e ~ N(0, diag) and add J e.
+	const double s = 1 + m_noise.scale_bias, x = s * u.x(), y = s * u.y(), phi = u.phi();
+	// MRPT's Gaussian odometry model (CActionRobotMovement2D, mmGaussian) with random-walk std-devs:
+	// cov = J diag(sxy^2, sxy^2, sphi^2) J^T, J = [R(dphi/2) | d(x, y)/d(phi)]: draw e ~ N(0, diag), add J e.
 	const double d = std::hypot(x, y);
-	const double sxy = n.translation_noise * d + n.translation_noise_per_turn * std::abs(phi);
-	const double sphi = n.rotation_noise * d + n.rotation_noise_per_turn * std::abs(phi);
+	const double sxy = m_noise.sigmaXY(d, phi), sphi = m_noise.sigmaPhi(d, phi);
 	const double ex = sxy * m_rng.drawGaussian1D_normalized();
 	const double ey = sxy * m_rng.drawGaussian1D_normalized();
 	const double ephi = sphi * m_rng.drawGaussian1D_normalized();

@@ -67,7 +67,10 @@ void RawlogWriter::write(
 	{
 		mrpt::obs::CActionRobotMovement2D mv;
 		mv.timestamp = sweep.timestamp;
-		mv.computeFromOdometry(pose - (m_last ? *m_last : mrpt::poses::CPose2D()), m_motionModel);
+		const auto increment = pose - (m_last ? *m_last : mrpt::poses::CPose2D());
+		mv.computeFromOdometry(
+			increment, m_motionModel ? m_motionModel(increment)
+									 : mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
 		mrpt::obs::CActionCollection acts;
 		acts.insert(mv);
 		mrpt::obs::CSensoryFrame sf;

@@ -8,8 +8,8 @@
 namespace whiskermap::world
 {
 /** Dead reckoning along a true path: each step's true increment, scaled by the bias and
- *  perturbed by a draw from MRPT's Gaussian odometry model (OdometryNoise), is composed onto
- *  the previous odometry pose. The first pose is known (odometry = truth there). Seeded from
+ *  perturbed by a draw from MRPT's Gaussian odometry model with OdometryNoise's random-walk
+ *  std-devs, is composed onto the previous odometry pose. The first pose is known (odometry = truth there). Seeded from
  *  its own stream: the same seed and the same path give the same odometry, and the sensor
  *  noise of a run is the same whatever the odometry preset. */
 class OdometrySimulator

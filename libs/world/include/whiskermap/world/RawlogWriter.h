@@ -5,6 +5,7 @@
 #include <whiskermap/obs/CObservationWhiskerContacts.h>
 
 #include <fstream>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -50,11 +51,11 @@ class RawlogWriter
 	void write(
 		const mrpt::poses::CPose2D& odometry, const mrpt::poses::CPose2D& truth,
 		const obs::CObservationWhiskerContacts& sweep);
-	/** The motion model of the actions written from now on (action-sf layout). */
-	void setMotionModel(const mrpt::obs::CActionRobotMovement2D::TMotionModelOptions& model)
-	{
-		m_motionModel = model;
-	}
+	/** The motion model of each action written from now on (action-sf layout), given the
+	 *  odometry increment it records; MRPT's default model unless set. */
+	using MotionModel =
+		std::function<mrpt::obs::CActionRobotMovement2D::TMotionModelOptions(const mrpt::poses::CPose2D& increment)>;
+	void setMotionModel(MotionModel model) { m_motionModel = std::move(model); }
 	/** Flushes and renames both files into place. */
 	void close();
 
@@ -67,7 +68,7 @@ class RawlogWriter
 	mrpt::io::CFileGZOutputStream m_out;
 	std::ofstream m_gt;
 	std::optional<mrpt::poses::CPose2D> m_last;
-	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions m_motionModel;
+	MotionModel m_motionModel;
 	bool m_closed = false;
 };
 }  // namespace whiskermap::world
