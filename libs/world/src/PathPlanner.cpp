@@ -89,10 +89,15 @@ bool PathPlanner::segmentFree(const Eigen::Vector2d& a, const Eigen::Vector2d& b
 	return true;
 }
 
-Eigen::Vector2d PathPlanner::reachable(const Eigen::Vector2d& p) const
+bool PathPlanner::inRegion(const Eigen::Vector2d& p) const
 {
 	const int c = cellOf(p);
-	if (c >= 0 && m_inRegion[c]) return p;
+	return c >= 0 && m_inRegion[c];
+}
+
+Eigen::Vector2d PathPlanner::reachable(const Eigen::Vector2d& p) const
+{
+	if (inRegion(p)) return p;
 	int best = m_region.front();
 	double bestD = INFINITY;
 	for (int r : m_region)

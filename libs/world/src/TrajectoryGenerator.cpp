@@ -83,7 +83,7 @@ void driveAlong(Driver& d, const PathPlanner& planner, const Vec& goal)
 	const Vec from = d.position();
 	const int n = std::max(1, int(std::ceil((goal - from).norm() / PLACE_GAP - 1e-9)));
 	for (int k = 1; k < n && !d.full(); k++)
-		if (const Vec p = from + (goal - from) * (double(k) / n); planner.reachable(p) == p) driveTo(d, planner, p);
+		if (const Vec p = from + (goal - from) * (double(k) / n); planner.inRegion(p)) driveTo(d, planner, p);
 	if (!d.full()) driveTo(d, planner, goal);
 }
 

@@ -23,6 +23,8 @@ class PathPlanner
 	bool free(const Eigen::Vector2d& p) const;
 	/** True when the straight segment a-b is free (see above). */
 	bool segmentFree(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
+	/** True when `p` lies in a free cell of the largest connected free region. */
+	bool inRegion(const Eigen::Vector2d& p) const;
 	/** `p` itself if it lies in a free cell of the largest connected free region, else the
 	 *  centre of the nearest such cell. Throws core::Error when no cell is free. */
 	Eigen::Vector2d reachable(const Eigen::Vector2d& p) const;
