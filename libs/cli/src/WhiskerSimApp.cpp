@@ -88,15 +88,15 @@ int run(const Options& o)
 	ContactStatistic stat;
 	size_t contacts = 0, wallContacts = 0;
 	double travelled = 0;
-	mrpt::poses::CPose2D odo;
+	std::vector<mrpt::poses::CPose2D> odometryPoses;
 	std::vector<WhiskerSimulator::Truth> truth;
 	for (size_t k = 0; k < poses.size(); k++)
 	{
 		const auto& p = poses[k];
 		const auto sweep = sim.sense(p, mrpt::Clock::fromDouble(t0 + k / planned.rate), &truth);
-		odo = odometry.next(p);
-		out.write(odo, p, *sweep);
-		if (odometryPath) odometryPath->write(mrpt::Clock::toDouble(sweep->timestamp), odo);
+		odometryPoses.push_back(odometry.next(p));
+		out.write(odometryPoses.back(), p, *sweep);
+		if (odometryPath) odometryPath->write(mrpt::Clock::toDouble(sweep->timestamp), odometryPoses.back());
 		if (k > 0) travelled += (p - poses[k - 1]).norm();
 		int onTables = 0;
 		for (const auto& t : truth)
@@ -120,9 +120,15 @@ int run(const Options& o)
 		picture.arena(w, {0, 0, 0});
 		for (const auto& t : w.tables) picture.table(t, {0, 0, 200}, 2);
 		picture.caption(std::filesystem::path(o.out).filename().string() + ": tables (blue), robot poses (grey), contacts + normals (red)");
+		if (odometryPath)
+		{
+			picture.path(odometryPoses, {230, 140, 0}, 2);
+			picture.caption("odometry path (orange)", {230, 140, 0});
+		}
 		picture.save(o.png);
 	}
 
+	const auto& odo = odometryPoses.back();
 	if (!o.quiet)
 	{
 		std::printf("whisker-sim: wrote %s (%zu sweeps, %zu poses skipped)\n", o.out.c_str(), poses.size(), planned.skipped);
