@@ -9,6 +9,7 @@
 namespace CLI
 {
 class App;
+class Option;
 }
 
 namespace whiskermap::cli
@@ -32,7 +33,12 @@ struct SimTrajectory
 	};
 	/** The poses to simulate in `sim`'s world (already tiled `tilesX` x `tilesY`). A blocked
 	 *  pose in a --path file is a core::Error naming the file and line; blocked paper-grid
-	 *  poses are skipped (reported on stderr unless `quiet`). */
+	 *  poses are skipped (reported on stderr unless `quiet`). An option given for another
+	 *  kind of trajectory (--speed with paper-grid, --grid with lawnmower, ...) is an error. */
 	Poses poses(const world::WhiskerSimulator& sim, int tilesX, int tilesY, uint64_t seed, bool quiet) const;
+
+   private:
+	std::vector<const CLI::Option*> m_continuousOnly;  ///< given: the trajectory must be continuous
+	const CLI::Option* m_grid = nullptr;
 };
 }  // namespace whiskermap::cli
