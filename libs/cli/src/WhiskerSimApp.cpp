@@ -88,15 +88,16 @@ int run(const Options& o)
 	ContactStatistic stat;
 	size_t contacts = 0, wallContacts = 0;
 	double travelled = 0;
-	std::vector<mrpt::poses::CPose2D> odometryPoses;
+	mrpt::poses::CPose2D odo;
+	std::vector<mrpt::poses::CPose2D> odometryPoses;  // for the picture
 	std::vector<WhiskerSimulator::Truth> truth;
 	for (size_t k = 0; k < poses.size(); k++)
 	{
 		const auto& p = poses[k];
 		const auto sweep = sim.sense(p, mrpt::Clock::fromDouble(t0 + k / planned.rate), &truth);
-		odometryPoses.push_back(odometry.next(p));
-		out.write(odometryPoses.back(), p, *sweep);
-		if (odometryPath) odometryPath->write(mrpt::Clock::toDouble(sweep->timestamp), odometryPoses.back());
+		odo = odometry.next(p);
+		out.write(odo, p, *sweep);
+		if (odometryPath) odometryPath->write(mrpt::Clock::toDouble(sweep->timestamp), odo);
 		if (k > 0) travelled += (p - poses[k - 1]).norm();
 		int onTables = 0;
 		for (const auto& t : truth)
@@ -108,6 +109,7 @@ int run(const Options& o)
 		if (!o.png.empty())
 		{
 			picture.robot(p, {120, 120, 120});
+			odometryPoses.push_back(odo);
 			for (const auto& s : sweep->toShapelets(p)) picture.shapelet(s, {220, 30, 30});
 		}
 		stat.add(onTables);
@@ -128,7 +130,6 @@ int run(const Options& o)
 		picture.save(o.png);
 	}
 
-	const auto& odo = odometryPoses.back();
 	if (!o.quiet)
 	{
 		std::printf("whisker-sim: wrote %s (%zu sweeps, %zu poses skipped)\n", o.out.c_str(), poses.size(), planned.skipped);
