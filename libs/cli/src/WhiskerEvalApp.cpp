@@ -5,6 +5,7 @@
 #include <whiskermap/eval/EvalReport.h>
 #include <whiskermap/eval/TableCsv.h>
 #include <whiskermap/obs/RawlogReader.h>
+#include <whiskermap/world/PathLog.h>
 
 #include <iostream>
 #include <optional>
@@ -15,7 +16,7 @@ namespace
 {
 struct Options
 {
-	std::string world, map, perPose, rawlog;
+	std::string world, map, perPose, rawlog, path, truth;
 	size_t poses = 0;
 	bool json = false;
 	eval::EvalOptions eval;
@@ -24,9 +25,22 @@ struct Options
 int run(const Options& o)
 {
 	o.eval.validate();
-	const auto w = world::World::load(o.world);
+	if (o.map.empty() && o.path.empty()) throw core::Error("nothing to evaluate: give --map (with --world) or --path (with --truth)");
+	if (o.path.empty() != o.truth.empty()) throw core::Error("--path and --truth go together");
+	if (o.map.empty() && !(o.world.empty() && o.perPose.empty() && o.rawlog.empty() && o.poses == 0))
+		throw core::Error("--world, --per-pose, --rawlog and --poses score a map: give --map too");
+	if (!o.map.empty() && o.world.empty()) throw core::Error("--map needs --world (the true tables)");
 	eval::EvalReport report;
 	report.options = o.eval;
+	if (!o.path.empty())
+		report.trajectory = eval::TrajectoryEvaluation::compute(
+			world::PathLog::read(o.path), world::PathLog::read(o.truth), o.eval, o.path, o.truth);
+	if (o.map.empty())
+	{
+		std::cout << (o.json ? report.toJson() : report.toText());
+		return 0;
+	}
+	const auto w = world::World::load(o.world);
 	const auto estimated = eval::TableCsv::tables(eval::TableCsv::readMap(o.map));
 	report.map = eval::MapEvaluation::compute(w.tables, estimated, o.eval);
 
@@ -74,15 +88,15 @@ int WhiskerEvalApp::main(int argc, char** argv)
 		"one-to-one (Hungarian algorithm, least total centre distance, most matches first) "
 		"among pairs within the centre and yaw gates (yaw modulo 180 degrees); then precision, "
 		"recall, F1, count error (estimated - true), centre RMSE and mean absolute yaw error "
-		"over matched tables, and OSPA of the table centres. Definitions: doc/evaluation.md."};
+		"over matched tables, and OSPA of the table centres. With --path and --truth, or alone, "
+		"it scores an estimated robot path: ATE (RMSE, max; raw and after the best SE(2) "
+		"alignment), RPE per metre, final pose error. Definitions: doc/evaluation.md."};
 	Options o;
-	app.add_option("-w,--world", o.world, "True world .ini (the one simulated; doc/formats.md)")
-		->required();
+	app.add_option("-w,--world", o.world, "True world .ini (the one simulated; doc/formats.md); needed with --map");
 	app.add_option(
-		   "-m,--map", o.map,
-		   "Consolidated map CSV written by whisker-map (map_tables.csv: id,x,y,yaw_deg,length,"
-		   "width,leg_width,texture,existence,contacts,legs): scored as written")
-		->required();
+		"-m,--map", o.map,
+		"Consolidated map CSV written by whisker-map (map_tables.csv: id,x,y,yaw_deg,length,"
+		"width,leg_width,texture,existence,contacts,legs): scored as written; optional with --path");
 	app.add_option(
 		"--per-pose", o.perPose,
 		"Per-pose MAP tables CSV (per_pose_tables.csv: pose,x,y,yaw_deg,length,width,"
@@ -95,6 +109,19 @@ int WhiskerEvalApp::main(int argc, char** argv)
 		"on >= 2 legs (a contact within 3 sigma_r + 1 cm of a leg) and recall on them");
 	app.add_option("--poses", o.poses, "Number of poses (sweeps), when --per-pose is given without --rawlog")
 		->check(CLI::PositiveNumber);
+	app.add_option(
+		"--path", o.path,
+		"Estimated robot path, one 'timestamp x y yaw_rad' line per sweep (the columns of "
+		"whisker-sim's OUT_ground_truth_robot_path.txt; e.g. its OUT_odometry_path.txt)");
+	app.add_option(
+		"--truth", o.truth,
+		"True robot path for --path (OUT_ground_truth_robot_path.txt): same number of lines, "
+		"same timestamps (within 1 microsecond)");
+	app.add_option(
+		   "--rpe-segment", o.eval.rpe_segment_m,
+		   "RPE: segments from each pose to the first pose at least this far along the true path, m")
+		->check(CLI::PositiveNumber)
+		->capture_default_str();
 	app.add_flag("--json", o.json, "Print one JSON object (fixed key order and format) instead of a table");
 	app.add_option(
 		   "--gate-distance", o.eval.gate_distance,

@@ -16,5 +16,6 @@ void EvalOptions::validate() const
 	require(std::isfinite(ospa_c) && ospa_c > 0, "ospa_c must be > 0");
 	require(std::isfinite(ospa_p) && ospa_p >= 1, "ospa_p must be >= 1");
 	require(std::isfinite(local_radius) && local_radius > 0, "local_radius must be > 0");
+	require(std::isfinite(rpe_segment_m) && rpe_segment_m > 0, "rpe_segment_m must be > 0");
 }
 }  // namespace whiskermap::eval

@@ -1,3 +1,4 @@
+#include <whiskermap/core/Angles.h>
 #include <whiskermap/eval/EvalReport.h>
 
 #include <cstdio>
@@ -54,18 +55,66 @@ Fields figureFields(const Figures& f, int countDecimals)
 		out.emplace_back(r.key, num(f.*r.field, r.field == &Figures::count_error ? countDecimals : 6));
 	return out;
 }
+
+/** The trajectory figures in report order (JSON). */
+Fields trajectoryFields(const TrajectoryEvaluation& t, const EvalOptions& o)
+{
+	return {
+		{"poses", std::to_string(t.poses)},
+		{"length_m", num(t.length_m, 6)},
+		{"ate_rmse_m", num(t.ate_rmse_m, 6)},
+		{"ate_max_m", num(t.ate_max_m, 6)},
+		{"ate_yaw_rmse_deg", num(t.ate_yaw_rmse_deg, 6)},
+		{"aligned_rmse_m", num(t.aligned_rmse_m, 6)},
+		{"aligned_max_m", num(t.aligned_max_m, 6)},
+		{"alignment_yaw_deg", num(core::rad2deg(t.alignment.yaw), 6)},
+		{"alignment_x_m", num(t.alignment.t.x(), 6)},
+		{"alignment_y_m", num(t.alignment.t.y(), 6)},
+		{"rpe_segment_m", num(o.rpe_segment_m, 6)},
+		{"rpe_segments", std::to_string(t.rpe_segments)},
+		{"rpe_trans", num(t.rpe_trans, 6)},
+		{"rpe_rot_deg_per_m", num(t.rpe_rot_deg_per_m, 6)},
+		{"final_error_m", num(t.final_error_m, 6)},
+		{"final_yaw_err_deg", num(t.final_yaw_err_deg, 6)},
+	};
+}
+
+std::string trajectoryText(const TrajectoryEvaluation& t, const EvalOptions& o)
+{
+	char buf[512];
+	std::snprintf(
+		buf, sizeof(buf),
+		"trajectory: %zu poses, %.3f m of true travel\n"
+		"%-24s %10s %10s\n"
+		"%-24s %10.4f %10.4f\n"
+		"%-24s %10.4f %10.4f\n"
+		"%-24s %10.3f\n"
+		"alignment (estimate onto truth): yaw %.3f deg, shift (%.4f, %.4f) m\n"
+		"RPE over %zu segments of >= %.3g m: %s m/m, %s deg/m\n"
+		"final pose error: %.4f m, %.3f deg\n",
+		t.poses, t.length_m, "", "raw", "aligned", "ATE RMSE (m)", t.ate_rmse_m, t.aligned_rmse_m,
+		"ATE max (m)", t.ate_max_m, t.aligned_max_m, "heading RMSE (deg)", t.ate_yaw_rmse_deg,
+		core::rad2deg(t.alignment.yaw), t.alignment.t.x(), t.alignment.t.y(), t.rpe_segments,
+		o.rpe_segment_m, num(t.rpe_trans, 4, "n/a").c_str(), num(t.rpe_rot_deg_per_m, 3, "n/a").c_str(),
+		t.final_error_m, t.final_yaw_err_deg);
+	return buf;
+}
 }  // namespace
 
 std::string EvalReport::toJson() const
 {
-	Fields top = figureFields(map.figures, 0);
-	top.emplace_back("estimated", std::to_string(map.estimated));
-	top.emplace_back("truth", std::to_string(map.truth));
-	top.emplace_back("matched", std::to_string(map.matched));
-	if (identifiability)
+	Fields top;
+	if (map)
+	{
+		top = figureFields(map->figures, 0);
+		top.emplace_back("estimated", std::to_string(map->estimated));
+		top.emplace_back("truth", std::to_string(map->truth));
+		top.emplace_back("matched", std::to_string(map->matched));
+	}
+	if (map && identifiability)
 	{
 		top.emplace_back("identifiable_tables", std::to_string(identifiability->tables.size()));
-		top.emplace_back("recall_identifiable", num(identifiability->recall(map), 6));
+		top.emplace_back("recall_identifiable", num(identifiability->recall(*map), 6));
 	}
 	if (perPose)
 	{
@@ -74,10 +123,18 @@ std::string EvalReport::toJson() const
 		if (perPose->local) pp.emplace_back("local", object(figureFields(*perPose->local, 6), 4));
 		top.emplace_back("per_pose", object(pp, 2));
 	}
+	if (trajectory) top.emplace_back("trajectory", object(trajectoryFields(*trajectory, options), 2));
 	return object(top, 0) + "\n";
 }
 
 std::string EvalReport::toText() const
+{
+	std::string s = map ? mapText() : "";
+	if (trajectory) s += trajectoryText(*trajectory, options);
+	return s;
+}
+
+std::string EvalReport::mapText() const
 {
 	char buf[256];
 	std::string s;
@@ -85,10 +142,10 @@ std::string EvalReport::toText() const
 		buf, sizeof(buf),
 		"map: %zu tables estimated, %zu true, %zu matched (gates %.3g m, %.3g deg; "
 		"OSPA c = %.3g m, p = %.3g)\n",
-		map.estimated, map.truth, map.matched, options.gate_distance, options.gate_yaw_deg,
+		map->estimated, map->truth, map->matched, options.gate_distance, options.gate_yaw_deg,
 		options.ospa_c, options.ospa_p);
 	s += buf;
-	std::vector<std::pair<const char*, const Figures*>> columns{{"map", &map.figures}};
+	std::vector<std::pair<const char*, const Figures*>> columns{{"map", &map->figures}};
 	if (perPose) columns.emplace_back("per-pose", &perPose->all);
 	if (perPose && perPose->local) columns.emplace_back("per-pose local", &*perPose->local);
 	std::snprintf(buf, sizeof(buf), "%-16s", "");
@@ -126,7 +183,7 @@ std::string EvalReport::toText() const
 		std::snprintf(
 			buf, sizeof(buf),
 			"identifiable tables (touched on >= 2 legs, gate %.3f m): %zu; recall on them %.3f\n",
-			identifiability->gate, identifiability->tables.size(), identifiability->recall(map));
+			identifiability->gate, identifiability->tables.size(), identifiability->recall(*map));
 		s += buf;
 	}
 	return s;

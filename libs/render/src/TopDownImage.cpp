@@ -51,6 +51,12 @@ void TopDownImage::robot(const mrpt::poses::CPose2D& p, mrpt::img::TColor c)
 	segment({p.x(), p.y()}, {p.x() + 0.08 * std::cos(p.phi()), p.y() + 0.08 * std::sin(p.phi())}, c, 1);
 }
 
+void TopDownImage::path(const std::vector<mrpt::poses::CPose2D>& poses, mrpt::img::TColor c, unsigned width)
+{
+	for (size_t i = 1; i < poses.size(); i++)
+		segment({poses[i - 1].x(), poses[i - 1].y()}, {poses[i].x(), poses[i].y()}, c, width);
+}
+
 void TopDownImage::shapelet(const obs::Shapelet& s, mrpt::img::TColor c)
 {
 	m_img.filledRectangle(px(s.x) - 1, py(s.y) - 1, px(s.x) + 1, py(s.y) + 1, c);

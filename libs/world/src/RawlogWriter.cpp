@@ -4,6 +4,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/core/Error.h>
+#include <whiskermap/world/PathLog.h>
 #include <whiskermap/world/RawlogWriter.h>
 
 #include <cstdio>
@@ -29,8 +30,7 @@ RawlogWriter::RawlogWriter(const std::string& rawlogPath, Format format, GroundT
 	if (m_gtPath.empty()) return;
 	m_gt.open(m_gtPath + ".tmp");
 	if (!m_gt) throw core::Error(m_gtPath + ": cannot create file");
-	m_gt << "% Ground truth robot path, one line per whisker sweep in the rawlog\n"
-		 << "% timestamp(s)  x(m)  y(m)  yaw(rad)\n";
+	m_gt << PathLog::header("Ground truth robot path, one line per whisker sweep in the rawlog");
 }
 
 RawlogWriter::~RawlogWriter()
@@ -46,6 +46,13 @@ RawlogWriter::~RawlogWriter()
 void RawlogWriter::write(
 	const mrpt::poses::CPose2D& pose, const obs::CObservationWhiskerContacts& sweep)
 {
+	write(pose, pose, sweep);
+}
+
+void RawlogWriter::write(
+	const mrpt::poses::CPose2D& pose, const mrpt::poses::CPose2D& truth,
+	const obs::CObservationWhiskerContacts& sweep)
+{
 	sweep.validate();  // nothing invalid is ever written
 	auto arch = mrpt::serialization::archiveFrom(m_out);
 	if (m_format == Format::Observations)
@@ -60,8 +67,10 @@ void RawlogWriter::write(
 	{
 		mrpt::obs::CActionRobotMovement2D mv;
 		mv.timestamp = sweep.timestamp;
-		mrpt::obs::CActionRobotMovement2D::TMotionModelOptions opts;
-		mv.computeFromOdometry(pose - (m_last ? *m_last : mrpt::poses::CPose2D()), opts);
+		const auto increment = pose - (m_last ? *m_last : mrpt::poses::CPose2D());
+		mv.computeFromOdometry(
+			increment, m_motionModel ? m_motionModel(increment)
+									 : mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
 		mrpt::obs::CActionCollection acts;
 		acts.insert(mv);
 		mrpt::obs::CSensoryFrame sf;
@@ -70,11 +79,7 @@ void RawlogWriter::write(
 	}
 	m_last = pose;
 	if (m_gtPath.empty()) return;
-	char line[160];
-	std::snprintf(
-		line, sizeof(line), "%.6f %.9f %.9f %.9f\n",
-		mrpt::Clock::toDouble(sweep.timestamp), pose.x(), pose.y(), pose.phi());
-	m_gt << line;
+	m_gt << PathLog::line(mrpt::Clock::toDouble(sweep.timestamp), truth);
 }
 
 void RawlogWriter::close()

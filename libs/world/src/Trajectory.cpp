@@ -69,11 +69,31 @@ class PathFileSource : public PoseSource
 	}
 	void rewind() override { m_in = std::make_unique<core::LineReader>(m_path, "path file"); }
 	size_t size() const override { return m_size; }
+	std::string where() const override { return m_in->where(); }
+	size_t lineNo() const { return m_in->lineNo(); }
 
    private:
 	std::string m_path;
 	std::unique_ptr<core::LineReader> m_in = std::make_unique<core::LineReader>(m_path, "path file");
 	size_t m_size = 0;
+};
+
+class VectorSource : public PoseSource
+{
+   public:
+	explicit VectorSource(std::vector<mrpt::poses::CPose2D> poses) : m_poses(std::move(poses)) {}
+	bool next(mrpt::poses::CPose2D& p) override
+	{
+		if (m_i == m_poses.size()) return false;
+		p = m_poses[m_i++];
+		return true;
+	}
+	void rewind() override { m_i = 0; }
+	size_t size() const override { return m_poses.size(); }
+
+   private:
+	std::vector<mrpt::poses::CPose2D> m_poses;
+	size_t m_i = 0;
 };
 
 std::vector<mrpt::poses::CPose2D> all(PoseSource& s)
@@ -117,5 +137,22 @@ std::unique_ptr<PoseSource> Trajectory::pathFileSource(const std::string& path)
 	return std::make_unique<PathFileSource>(path);
 }
 
-std::vector<mrpt::poses::CPose2D> Trajectory::readPathFile(const std::string& path) { return all(*pathFileSource(path)); }
+std::unique_ptr<PoseSource> Trajectory::vectorSource(std::vector<mrpt::poses::CPose2D> poses)
+{
+	return std::make_unique<VectorSource>(std::move(poses));
+}
+
+std::vector<mrpt::poses::CPose2D> Trajectory::readPathFile(const std::string& path, std::vector<size_t>* lines)
+{
+	PathFileSource s(path);
+	if (lines) lines->clear();
+	std::vector<mrpt::poses::CPose2D> v;
+	mrpt::poses::CPose2D p;
+	while (s.next(p))
+	{
+		v.push_back(p);
+		if (lines) lines->push_back(s.lineNo());
+	}
+	return v;
+}
 }  // namespace whiskermap::world

@@ -20,6 +20,8 @@ struct EvalOptions
 	/** Per-pose "local" truth: the tables whose centre is within this distance (metres) of the
 	 *  pose's robot position. */
 	double local_radius = 1.5;
+	/** Relative pose error: segments of at least this much true travel (metres). */
+	double rpe_segment_m = 1.0;
 
 	/** Throws core::Error naming the first option out of range. */
 	void validate() const;

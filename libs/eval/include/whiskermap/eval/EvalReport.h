@@ -3,6 +3,7 @@
 #include <whiskermap/eval/Identifiability.h>
 #include <whiskermap/eval/MapEvaluation.h>
 #include <whiskermap/eval/PerPoseEvaluation.h>
+#include <whiskermap/eval/TrajectoryEvaluation.h>
 
 #include <optional>
 #include <string>
@@ -14,14 +15,19 @@ namespace whiskermap::eval
 struct EvalReport
 {
 	EvalOptions options;
-	MapEvaluation map;  ///< the consolidated map
-	std::optional<Identifiability> identifiability;  ///< when a rawlog was given
+	std::optional<MapEvaluation> map;  ///< the consolidated map, when one was given
+	std::optional<Identifiability> identifiability;  ///< when a rawlog was given (with a map)
 	std::optional<PerPoseEvaluation> perPose;  ///< when per-pose tables were given
+	std::optional<TrajectoryEvaluation> trajectory;  ///< when an estimated path was given
 
-	/** `{ "precision": ..., ..., "per_pose": { ... } }`, ending in a newline. Numbers have six
-	 *  decimals (counts none); an undefined figure (no matches) is null. */
+	/** `{ "precision": ..., ..., "per_pose": { ... }, "trajectory": { ... } }`, ending in a
+	 *  newline; the map's figures only with a map. Numbers have six decimals (counts none); an
+	 *  undefined figure (no matches, no RPE segment) is null. */
 	std::string toJson() const;
 	/** A few lines for a terminal. */
 	std::string toText() const;
+
+   private:
+	std::string mapText() const;
 };
 }  // namespace whiskermap::eval

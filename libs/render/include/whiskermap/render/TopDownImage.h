@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 namespace whiskermap::render
 {
@@ -28,6 +29,8 @@ class TopDownImage
 	void quad(const std::array<Eigen::Vector2d, 4>& corners, mrpt::img::TColor c, unsigned width = 1);
 	/** A robot pose: a small circle and a heading tick. */
 	void robot(const mrpt::poses::CPose2D& p, mrpt::img::TColor c);
+	/** A path: the polyline through the poses' positions. */
+	void path(const std::vector<mrpt::poses::CPose2D>& poses, mrpt::img::TColor c, unsigned width = 1);
 	/** A shapelet: a dot and a short tick along its surface normal. */
 	void shapelet(const obs::Shapelet& s, mrpt::img::TColor c);
 	/** A caption line at the top left (call repeatedly for more lines). */

@@ -18,6 +18,8 @@ class PoseSource
 	virtual void rewind() = 0;
 	/** How many poses one pass gives. */
 	virtual size_t size() const = 0;
+	/** Where the pose last returned came from, for errors ("FILE: line N: "; "" if nowhere). */
+	virtual std::string where() const { return ""; }
 };
 
 /** Robot poses to simulate. */
@@ -40,8 +42,12 @@ struct Trajectory
 	 *  |x|, |y| <= MAX_COORDINATE, |yaw_deg| <= 3600. The whole file is checked when the
 	 *  source is made; errors are core::Error naming file and line. */
 	static std::unique_ptr<PoseSource> pathFileSource(const std::string& path);
-	/** All poses of a path file (memory grows with the file: tests and short paths). */
-	static std::vector<mrpt::poses::CPose2D> readPathFile(const std::string& path);
+	/** All poses of a path file (memory grows with the file: tests and short paths).
+	 *  `lines` (optional) receives each pose's line number, for later errors. */
+	static std::vector<mrpt::poses::CPose2D> readPathFile(
+		const std::string& path, std::vector<size_t>* lines = nullptr);
+	/** The given poses, one at a time (generated trajectories). */
+	static std::unique_ptr<PoseSource> vectorSource(std::vector<mrpt::poses::CPose2D> poses);
 	/** Writes a path file that readPathFile reads back to the same poses (to 1e-9 m and
 	 *  degrees); each line of `comment` becomes a `# ` line at the top. Throws core::Error. */
 	static void writePathFile(

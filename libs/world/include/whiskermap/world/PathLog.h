@@ -1,0 +1,50 @@
+#pragma once
+#include <mrpt/poses/CPose2D.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace whiskermap::world
+{
+/** A timestamped robot path file, one line per whisker sweep: `timestamp x y yaw` (seconds,
+ *  metres, radians), `%` comment lines on top. whisker-sim writes the true path in it
+ *  (`<name>_ground_truth_robot_path.txt`, as MRPT's simulators do) and, with noisy odometry,
+ *  the odometry path (`<name>_odometry_path.txt`); whisker-eval --path reads an estimated
+ *  path in the same columns (doc/formats.md). */
+struct PathLog
+{
+	struct Entry
+	{
+		double t = 0;  ///< seconds
+		mrpt::poses::CPose2D pose;
+		int line = 0;  ///< line in the file it was read from (0 if not read)
+	};
+
+	/** Reads a path file strictly: blank lines and lines starting with `%` or `#` are
+	 *  skipped; every other line holds exactly four finite numbers; timestamps never go
+	 *  backwards; at least one pose. Throws core::Error "FILE: line L: problem". */
+	static std::vector<Entry> read(const std::string& path);
+
+	/** The two header lines: `% <title>` and the column line. */
+	static std::string header(const std::string& title);
+	/** One line, "%.6f %.9f %.9f %.9f\n" (microseconds, nanometres, nanoradians). */
+	static std::string line(double t, const mrpt::poses::CPose2D& pose);
+
+	/** Writes a path file under a temporary name; close() renames it into place, and a
+	 *  writer destroyed before close() removes it (no half-written file is left). */
+	class Writer
+	{
+	   public:
+		Writer(const std::string& path, const std::string& title);  ///< throws core::Error
+		~Writer();
+		void write(double t, const mrpt::poses::CPose2D& pose);
+		void close();  ///< throws core::Error when the write failed
+
+	   private:
+		std::string m_path;
+		std::ofstream m_out;
+		bool m_closed = false;
+	};
+};
+}  // namespace whiskermap::world

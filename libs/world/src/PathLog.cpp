@@ -1,0 +1,75 @@
+#include <whiskermap/core/Error.h>
+#include <whiskermap/world/PathLog.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+namespace whiskermap::world
+{
+std::vector<PathLog::Entry> PathLog::read(const std::string& path)
+{
+	if (!std::filesystem::is_regular_file(path)) throw core::Error(path + ": no such file");
+	std::ifstream f(path);
+	if (!f) throw core::Error(path + ": cannot open path file");
+	std::vector<Entry> out;
+	std::string text;
+	for (int lineNo = 1; std::getline(f, text); lineNo++)
+	{
+		const auto b = text.find_first_not_of(" \t\r");
+		if (b == std::string::npos || text[b] == '%' || text[b] == '#') continue;
+		const std::string where = path + ": line " + std::to_string(lineNo) + ": ";
+		std::istringstream s(text);
+		double t, x, y, yaw;
+		std::string extra;
+		if (!(s >> t >> x >> y >> yaw) || (s >> extra))
+			throw core::Error(where + "expected 'timestamp x y yaw', got '" + text + "'");
+		if (!std::isfinite(t) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw))
+			throw core::Error(where + "a value is not finite in '" + text + "'");
+		if (!out.empty() && t < out.back().t)
+			throw core::Error(where + "timestamp " + std::to_string(t) + " goes backwards");
+		out.push_back({t, mrpt::poses::CPose2D(x, y, yaw), lineNo});
+	}
+	if (f.bad()) throw core::Error(path + ": read failed");
+	if (out.empty()) throw core::Error(path + ": path file holds no poses");
+	return out;
+}
+
+std::string PathLog::header(const std::string& title)
+{
+	return "% " + title + "\n% timestamp(s)  x(m)  y(m)  yaw(rad)\n";
+}
+
+std::string PathLog::line(double t, const mrpt::poses::CPose2D& p)
+{
+	char buf[160];
+	std::snprintf(buf, sizeof(buf), "%.6f %.9f %.9f %.9f\n", t, p.x(), p.y(), p.phi());
+	return buf;
+}
+
+PathLog::Writer::Writer(const std::string& path, const std::string& title) : m_path(path)
+{
+	m_out.open(m_path + ".tmp");
+	if (!m_out) throw core::Error(m_path + ": cannot create file");
+	m_out << header(title);
+}
+
+PathLog::Writer::~Writer()
+{
+	if (m_closed) return;
+	m_out.close();
+	std::error_code ec;
+	std::filesystem::remove(m_path + ".tmp", ec);
+}
+
+void PathLog::Writer::write(double t, const mrpt::poses::CPose2D& pose) { m_out << line(t, pose); }
+
+void PathLog::Writer::close()
+{
+	m_out.close();
+	if (!m_out) throw core::Error(m_path + ": write failed");
+	std::filesystem::rename(m_path + ".tmp", m_path);
+	m_closed = true;
+}
+}  // namespace whiskermap::world
