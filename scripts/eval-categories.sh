@@ -74,10 +74,6 @@ for r in "${runs[@]}"; do
   fi
   echo -n "[$i/${#runs[@]}] $category seed $seed $noise:"
   score whisker-map "$dir/map" "$map" "${map_args[@]}" -q --jobs 1 -i "$rawlog" --world "$world" -o "$dir/map"
-  # The map whisker-map evaluates itself (metrics.json), as long as it differs from map_tables.csv.
-  if [[ -f "$dir/map/metrics.json" ]] && grep -q '"f1"' "$dir/map/metrics.json"; then
-    printf '%s\t%s\t%s\t%s\t%s\t%s\t\n' "$category" "$seed" "$noise" whisker-map-as-used "$dir/map" "$dir/map/metrics.json" >> "$manifest"
-  fi
   score baseline "$dir/baseline" "$base" -q -i "$rawlog" -o "$dir/baseline"
   if [[ $reverse == yes && $noise == default ]]; then
     score whisker-map-reversed "$dir/map-reversed" "$map" "${map_args[@]}" -q --jobs 1 --reverse -i "$rawlog" --world "$world" -o "$dir/map-reversed"

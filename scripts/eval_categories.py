@@ -19,7 +19,7 @@ COLUMNS = ["category", "seed", "noise", "method", "precision", "recall", "f1", "
            "recall_identifiable", "seconds"]
 CATEGORY_ORDER = ["paper_arena", "random_yaw", "clutter", "side_by_side", "large", "sparse"]
 NOISE_ORDER = ["noiseless", "default", "very-noisy"]
-METHODS = ["whisker-map", "whisker-map-as-used", "baseline", "whisker-map-reversed"]
+METHODS = ["whisker-map", "baseline", "whisker-map-reversed"]
 
 
 def row(category, seed, noise, method, path, seconds):
@@ -93,8 +93,8 @@ def report(summary_csv, summary_md, reversal_csv=None):
            "level, over the seeds: mean and worst F1, centre RMSE (mm, mean and worst), mean yaw "
            "error (deg), mean recall and the identifiability bound (identifiable / true tables: "
            "the best recall any mapper can reach), recall on the identifiable tables. "
-           "`whisker-map`: its map_tables.csv scored as written; `whisker-map-as-used`: the map "
-           "its own evaluation uses (metrics.json), when it writes one; `baseline`: whisker-baseline.", ""]
+           "`whisker-map`: its map_tables.csv scored as written (the lasting map); `baseline`: "
+           "whisker-baseline; `whisker-map-reversed`: whisker-map on the same sweeps in reverse order.", ""]
     header = ("| category | noise | method | runs | F1 mean | F1 worst | RMSE mm mean | RMSE mm worst "
               "| yaw deg | recall | bound | recall on identifiable |")
     out += [header, "|" + " --- |" * 12]
