@@ -74,14 +74,21 @@ world::World oneTable(double x, double y)
 	return w;
 }
 
-/** Poses that touch leg `leg` of table 0 (two contacts or more) and nothing else, in every
- *  world of `worlds` (noiseless truth): the robot 15-45 cm from the leg, every 15 degrees
- *  around it, every 30 degrees of heading; at most `n` of them, spread over the scan. */
-std::vector<CPose2D> posesTouchingOnly(const std::vector<world::World>& worlds, int leg, size_t n)
+/** The leg of table 0 of `w` centred at `c`. */
+int legAt(const world::World& w, const Eigen::Vector2d& c)
+{
+	for (int k = 0; k < 4; k++)
+		if ((w.tables[0].legCentre(k) - c).norm() < 1e-9) return k;
+	return -1;
+}
+
+/** Poses that touch the leg centred at `c` (two contacts or more) and nothing else, in
+ *  every world of `worlds` (noiseless truth): the robot 15-45 cm from the leg, every 15
+ *  degrees around it, every 30 degrees of heading; at most `n` of them, spread over the scan. */
+std::vector<CPose2D> posesTouchingOnly(const std::vector<world::World>& worlds, const Eigen::Vector2d& c, size_t n)
 {
 	std::vector<CPose2D> found;
 	std::vector<world::WhiskerSimulator::Truth> truth;
-	const auto c = worlds[0].tables[0].legCentre(leg);
 	for (int ring = 0; ring < 4; ring++)
 		for (int around = 0; around < 24; around++)
 			for (int heading = 0; heading < 12; heading++)
@@ -91,6 +98,7 @@ std::vector<CPose2D> posesTouchingOnly(const std::vector<world::World>& worlds, 
 				bool only = true;
 				for (const auto& w : worlds)
 				{
+					const int leg = legAt(w, c);
 					world::WhiskerSimulator sim(w, scratchbot(), {}, 1);
 					if (!sim.poseIsFree(pose))
 					{
@@ -126,9 +134,9 @@ TEST(LastingMap, MirrorTableIsCorrectedWhenAThirdLegIsTouched)
 	// Legs 0 (+x+y) and 1 (-x+y) of the table at (0, 0) are legs 3 (+x-y) and 2 (-x-y) of its
 	// mirror image at (0, 0.6). The third leg: 3 (+x-y) of the first, 0 (+x+y) of the second.
 	const world::World worlds[2] = {oneTable(0, 0), oneTable(0, 0.6)};
-	const int thirdLeg[2] = {3, 0};
+	const Eigen::Vector2d thirdLeg[2] = {{0.5, -0.3}, {0.5, 0.9}};
 	const std::vector<world::World> both(std::begin(worlds), std::end(worlds));
-	const auto legA = posesTouchingOnly(both, 0, 2), legB = posesTouchingOnly(both, 1, 2);
+	const auto legA = posesTouchingOnly(both, {0.5, 0.3}, 2), legB = posesTouchingOnly(both, {-0.5, 0.3}, 2);
 	ASSERT_EQ(legA.size(), 2u);
 	ASSERT_EQ(legB.size(), 2u);
 	const auto noise = world::NoisePreset::load(SRC + "/config/noise/default.ini");
