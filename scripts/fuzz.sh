@@ -5,6 +5,7 @@
 #   --seconds S  fuzz each target for S seconds (the test command's short form uses 30)
 #   --runs N     fuzz each target for N executions (the long form: 10000000)
 #   TARGET       rawlog observation world_ini robot_ini noise_ini map_ini path_file table_csv
+#                contact_log odometry_ini
 #                (default: all)
 # Each target starts from its seed corpus fuzz/corpus/<target>/ plus what earlier runs
 # found (FUZZ_BUILD_DIR/corpus/<target>/); a crash, leak, hang (>10 s) or out-of-memory (>2 GiB)
@@ -13,7 +14,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 limit=(-max_total_time=30)
-all=(rawlog observation world_ini robot_ini noise_ini map_ini path_file table_csv)
+all=(rawlog observation world_ini robot_ini noise_ini map_ini path_file table_csv contact_log odometry_ini)
 targets=()
 while [[ $# -gt 0 ]]; do
   case $1 in
