@@ -1,4 +1,5 @@
 #include <whiskermap/core/Angles.h>
+#include <whiskermap/core/MathCache.h>
 #include <whiskermap/inference/PoseFit.h>
 #include <whiskermap/inference/TableExistence.h>
 #include <whiskermap/inference/TableProposals.h>
@@ -72,8 +73,8 @@ double TableExistence::bound(const model::ModelParams& p, size_t legs)
 	// eq. 20 of a table with `legs` legs each at its corner exactly (eqs. 5-6, 8), and the
 	// best of a missing leg (eq. 15) or an invented one at each other corner.
 	const double k = static_cast<double>(std::min<size_t>(legs, 4));
-	const double linked = std::log(p.alpha_L + p.c_L) - model::logLegNull(p);
-	const double other = std::max(std::log(p.epsilon), model::logCell(std::log(p.alpha_L + p.c_L), p));
+	const double linked = core::cachedLog(p.alpha_L + p.c_L) - model::logLegNull(p);
+	const double other = std::max(core::cachedLog(p.epsilon), model::logCell(core::cachedLog(p.alpha_L + p.c_L), p));
 	return model::logCell(model::logTablePrior(p), p) + k * linked + (4 - k) * other;
 }
 
