@@ -31,16 +31,16 @@ double threadCpuMs()
 	return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
 }
 
-/** The q-quantile (nearest rank) of v, sorted in place. */
-double quantile(std::vector<double>& v, double q)
+/** The q-quantile (nearest rank) of sorted values. */
+double quantile(const std::vector<double>& sorted, double q)
 {
-	std::sort(v.begin(), v.end());
-	const size_t i = static_cast<size_t>(std::ceil(q * static_cast<double>(v.size())));
-	return v[std::min(v.size() - 1, i == 0 ? 0 : i - 1)];
+	const size_t i = static_cast<size_t>(std::ceil(q * static_cast<double>(sorted.size())));
+	return sorted[std::min(sorted.size() - 1, i == 0 ? 0 : i - 1)];
 }
 
 void report(const char* what, std::vector<double> v)
 {
+	std::sort(v.begin(), v.end());
 	const double mean = std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
 	std::printf(
 		"  %s ms per insertion: median %.4f, p95 %.4f, max %.4f, mean %.4f\n", what, quantile(v, 0.5),

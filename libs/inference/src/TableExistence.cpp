@@ -55,6 +55,9 @@ double TableExistence::of(const model::Blackboard& bb, Id t)
 			// A rival that cannot come within 20 nats of t (its best case with l and the legs
 			// it adopts) changes P(t) by less than 2e-9: not scored.
 			if (bound(p, adoptable(m_without, r, l, m_adopted) + 1) < sT - 20) continue;
+			// Pair tables fitted to two legs settle within millimetres: one already scored
+			// (or t itself) is not scored again (each pair of legs proposes its tables twice).
+			if (std::any_of(m_scored.begin(), m_scored.end(), [&](const Table& s) { return same(s, r, p); })) continue;
 			// The rival as it settles on the legs it adopts; counted once, and never when it
 			// settles on t itself.
 			Table settled = r;

@@ -37,6 +37,9 @@ double OrientedRect::faceDistance(double x, double y, int k) const
 bool OrientedRect::overlaps(const OrientedRect& o) const
 {
 	const double dx = o.cx - cx, dy = o.cy - cy;
+	// Centres further apart than the two circumradii: apart (what the axes below find, cheaper).
+	const double reach = std::sqrt(hx * hx + hy * hy) + std::sqrt(o.hx * o.hx + o.hy * o.hy);
+	if (dx * dx + dy * dy > reach * reach) return false;
 	const double axes[4] = {theta, theta + M_PI_2, o.theta, o.theta + M_PI_2};
 	const core::SinCos self = core::cachedSinCos(theta), other = core::cachedSinCos(o.theta);
 	for (const double a : axes)
