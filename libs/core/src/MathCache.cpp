@@ -40,10 +40,12 @@ struct LogSlot
 LogSlot logSlots[SLOTS];
 
 /** Sines and cosines: angles change all the time, so slots are replaced; a sequence number
- *  per slot (odd while being written) tells a reader that its copy is whole (a seqlock). */
+ *  per slot (odd while being written) tells a reader that its copy is whole (a seqlock).
+ *  Empty slots hold a NaN no arithmetic produces (not 0: that is the key of angle +0). */
+constexpr uint64_t NO_ANGLE = 0x7ff8dead0000beefull;
 struct AngleSlot
 {
-	std::atomic<uint64_t> sequence{0}, key{0}, sin{0}, cos{0};
+	std::atomic<uint64_t> sequence{0}, key{NO_ANGLE}, sin{0}, cos{0};
 };
 AngleSlot angleSlots[SLOTS];
 }  // namespace
@@ -71,6 +73,7 @@ double cachedLog(double x)
 SinCos cachedSinCos(double a)
 {
 	const uint64_t b = bitsOf(a);
+	if (b == NO_ANGLE) return {std::sin(a), std::cos(a)};
 	AngleSlot& s = angleSlots[slot(b)];
 	const uint64_t seq = s.sequence.load(std::memory_order_acquire);
 	if (seq % 2 == 0 && s.key.load(std::memory_order_relaxed) == b)
