@@ -110,6 +110,27 @@ TEST(CHierarchicalObjectMap, ConfigMistakesFailLoudly)
 	EXPECT_NE(configError(ok + "[MetricMap_hierarchicalObjectMap_00_insertOpts]\nmode=lastin\n").find("'lastin' is not lasting or per_pose"), std::string::npos);
 	EXPECT_NE(configError(ok + "[MetricMap_hierarchicalObjectMap_00_likelihoodOpts]\nmin_existence=1.5\n").find("min_existence"), std::string::npos);
 	EXPECT_NE(configError("[MetricMap]\n").find("needs exactly one"), std::string::npos);
+	EXPECT_NE(configError(ok + "[MetricMap_hierarchicalObjectMap_00_insertOpts]\nlocal_temperatures=0\n").find("local_temperatures"), std::string::npos);
+}
+
+// The lasting map's own anneal schedule: the shipped configuration gives the built-in
+// defaults, and each key reaches the map.
+TEST(CHierarchicalObjectMap, LocalScheduleKeysReachTheMap)
+{
+	mrpt::maps::CMultiMetricMap shipped(maps::MapConfig::load(SRC + "/config/whisker-map.ini"));
+	EXPECT_TRUE(shipped.mapByClass<CHierarchicalObjectMap>()->insertionOptions.lasting.schedule == maps::LastingMap::TOptions::TSchedule{});
+	mrpt::config::CConfigFileMemory c(
+		"[MetricMap]\nhierarchicalObjectMap_count=1\n[MetricMap_hierarchicalObjectMap_00_insertOpts]\n"
+		"local_beta_start=0.5\nlocal_temperatures=3\nlocal_sweeps_per_temperature=2\nlocal_coldest_sweeps=5\nlocal_polish_sweeps=0\n");
+	mrpt::maps::TSetOfMetricMapInitializers def;
+	def.loadFromConfigFile(c, "MetricMap");
+	mrpt::maps::CMultiMetricMap mm(def);
+	const auto& s = mm.mapByClass<CHierarchicalObjectMap>()->insertionOptions.lasting.schedule;
+	EXPECT_DOUBLE_EQ(s.beta_start, 0.5);
+	EXPECT_EQ(s.temperatures, 3u);
+	EXPECT_EQ(s.sweeps_per_temperature, 2u);
+	EXPECT_EQ(s.coldest_sweeps, 5u);
+	EXPECT_EQ(s.polish_sweeps, 0u);
 }
 
 // The lasting map of the default dataset: exactly the six tables, each within 3 mm and half

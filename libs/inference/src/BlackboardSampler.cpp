@@ -8,8 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <cstdio>
-#include <cstdlib>
 
 namespace whiskermap::inference
 {
@@ -354,7 +352,6 @@ bool BlackboardSampler::proposeMerge(Id l, Id other, double beta)
 		gain += model::logOddsLeg(m_bb, l);
 	}
 	const bool fitted = refitInPlace(l, gain);
-	if (getenv("WMDBG") && greedy(beta)) fprintf(stderr, "merge %d<-%d fitted %d gain %.3f at %.4f %.4f\n", l, other, fitted, gain, m_bb.leg(l).x, m_bb.leg(l).y);
 	if (fitted && accept(Move::Child, gain, beta)) return true;
 	m_bb.setLeg(l, oldL);
 	m_bb.setEvidence(l, oldEvidence);

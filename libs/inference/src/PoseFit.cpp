@@ -1,4 +1,5 @@
 #include <whiskermap/core/Angles.h>
+#include <whiskermap/core/MathCache.h>
 #include <whiskermap/inference/PoseFit.h>
 #include <whiskermap/model/Densities.h>
 
@@ -118,7 +119,7 @@ model::Table fitTable(
 	for (size_t i = 0; i < n; i++) yawSum += core::angleDiff(legs[i]->theta, procrustes, M_PI_2);
 	model::Table t = start;
 	t.theta = procrustes + kYaw * yawSum / (kPos + kYaw * static_cast<double>(n));
-	const double c = std::cos(t.theta), sn = std::sin(t.theta);
+	const auto [sn, c] = core::cachedSinCos(t.theta);
 	t.x = mqx - (c * mox - sn * moy);
 	t.y = mqy - (sn * mox + c * moy);
 	return t;

@@ -1,4 +1,5 @@
 #include <whiskermap/core/Angles.h>
+#include <whiskermap/core/MathCache.h>
 #include <whiskermap/inference/PoseFit.h>
 #include <whiskermap/inference/TableExistence.h>
 #include <whiskermap/inference/TableProposals.h>
@@ -54,6 +55,9 @@ double TableExistence::of(const model::Blackboard& bb, Id t)
 			// A rival that cannot come within 20 nats of t (its best case with l and the legs
 			// it adopts) changes P(t) by less than 2e-9: not scored.
 			if (bound(p, adoptable(m_without, r, l, m_adopted) + 1) < sT - 20) continue;
+			// Pair tables fitted to two legs settle within millimetres: one already scored
+			// (or t itself) is not scored again (each pair of legs proposes its tables twice).
+			if (std::any_of(m_scored.begin(), m_scored.end(), [&](const Table& s) { return same(s, r, p); })) continue;
 			// The rival as it settles on the legs it adopts; counted once, and never when it
 			// settles on t itself.
 			Table settled = r;
@@ -72,8 +76,8 @@ double TableExistence::bound(const model::ModelParams& p, size_t legs)
 	// eq. 20 of a table with `legs` legs each at its corner exactly (eqs. 5-6, 8), and the
 	// best of a missing leg (eq. 15) or an invented one at each other corner.
 	const double k = static_cast<double>(std::min<size_t>(legs, 4));
-	const double linked = std::log(p.alpha_L + p.c_L) - model::logLegNull(p);
-	const double other = std::max(std::log(p.epsilon), model::logCell(std::log(p.alpha_L + p.c_L), p));
+	const double linked = core::cachedLog(p.alpha_L + p.c_L) - model::logLegNull(p);
+	const double other = std::max(core::cachedLog(p.epsilon), model::logCell(core::cachedLog(p.alpha_L + p.c_L), p));
 	return model::logCell(model::logTablePrior(p), p) + k * linked + (4 - k) * other;
 }
 

@@ -47,6 +47,13 @@ void CHierarchicalObjectMap::TInsertionOptions::loadFromConfigFile(
 		lasting.contacts_per_leg = static_cast<uint32_t>(sec.integer("contacts_per_leg", lasting.contacts_per_leg, 0, 1000));
 		lasting.unexplained_per_spot =
 			static_cast<uint32_t>(sec.integer("unexplained_per_spot", lasting.unexplained_per_spot, 0, 1000));
+		auto& a = lasting.schedule;
+		a.beta_start = sec.number("local_beta_start", a.beta_start, 1e-6, 1e6);
+		a.temperatures = static_cast<uint32_t>(sec.integer("local_temperatures", a.temperatures, 1, 10000));
+		a.sweeps_per_temperature =
+			static_cast<uint32_t>(sec.integer("local_sweeps_per_temperature", a.sweeps_per_temperature, 1, 1000));
+		a.coldest_sweeps = static_cast<uint32_t>(sec.integer("local_coldest_sweeps", a.coldest_sweeps, 1, 1000));
+		a.polish_sweeps = static_cast<uint32_t>(sec.integer("local_polish_sweeps", a.polish_sweeps, 0, 1000));
 		memory_size = static_cast<size_t>(sec.integer("memory_size", memory_size, 1, 1000));
 		seed = static_cast<uint64_t>(sec.integer("seed", static_cast<long>(seed), 0, 1L << 53));
 		use_sensor_noise = sec.boolean("use_sensor_noise", use_sensor_noise);
@@ -62,7 +69,10 @@ void CHierarchicalObjectMap::TInsertionOptions::dumpToTextStream(std::ostream& o
 {
 	out << "mode=" << modeName(mode) << "\nvisit_radius=" << lasting.visit_radius
 		<< "\ncontacts_per_leg=" << lasting.contacts_per_leg << "\nunexplained_per_spot=" << lasting.unexplained_per_spot
-		<< "\nmemory_size=" << memory_size << "\nseed=" << seed << "\nuse_sensor_noise=" << use_sensor_noise
+		<< "\nlocal_beta_start=" << lasting.schedule.beta_start << "\nlocal_temperatures=" << lasting.schedule.temperatures
+		<< "\nlocal_sweeps_per_temperature=" << lasting.schedule.sweeps_per_temperature
+		<< "\nlocal_coldest_sweeps=" << lasting.schedule.coldest_sweeps
+		<< "\nlocal_polish_sweeps=" << lasting.schedule.polish_sweeps << "\nmemory_size=" << memory_size << "\nseed=" << seed << "\nuse_sensor_noise=" << use_sensor_noise
 		<< "\nkeep_history=" << keep_history << "\nmerge_distance=" << consolidation.merge_distance
 		<< "\nmerge_angle_deg=" << core::rad2deg(consolidation.merge_angle)
 		<< "\nevidence_margin=" << consolidation.evidence_margin << "\n";

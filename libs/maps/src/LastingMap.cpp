@@ -1,5 +1,6 @@
 #include <whiskermap/maps/LastingMap.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace whiskermap::maps
@@ -11,6 +12,17 @@ bool sameLeg(const model::Blackboard& a, const model::Blackboard& b, model::Id l
 	const model::Leg &p = a.leg(l), &q = b.leg(l);
 	return p.x == q.x && p.y == q.y && p.theta == q.theta && p.parent == q.parent &&
 		   a.evidence(l).count() == b.evidence(l).count() && a.shapeletsOf(l) == b.shapeletsOf(l);
+}
+
+/** The sampler's settings with the lasting map's local schedule (to the sampler's beta_end). */
+inference::SamplerParams localSampler(inference::SamplerParams p, const LastingMap::TOptions::TSchedule& s)
+{
+	const double end = p.schedule.betas().back();
+	p.schedule = inference::AnnealingSchedule::geometric(std::min(s.beta_start, end), end, s.temperatures);
+	p.sweeps_per_temperature = static_cast<int>(s.sweeps_per_temperature);
+	p.coldest_sweeps = static_cast<int>(s.coldest_sweeps);
+	p.polish_sweeps = static_cast<int>(s.polish_sweeps);
+	return p;
 }
 }  // namespace
 
@@ -63,10 +75,11 @@ LastingMap::TStats LastingMap::insert(
 	m_state.extract(m_new, radii, model, *m_region);
 	const model::Blackboard& board = m_region->board;
 
-	if (!m_sampler || !(m_samplerModel == model))
+	if (!m_sampler || !(m_samplerModel == model) || !(m_samplerSchedule == m_options.schedule))
 	{
-		m_sampler = std::make_unique<inference::BlackboardSampler>(model, sampler);
+		m_sampler = std::make_unique<inference::BlackboardSampler>(model, localSampler(sampler, m_options.schedule));
 		m_samplerModel = model;
+		m_samplerSchedule = m_options.schedule;
 	}
 	const inference::StepResult result = m_sampler->anneal(board, seed);
 	const model::Blackboard& solved = m_sampler->best();

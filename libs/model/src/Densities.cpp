@@ -1,4 +1,5 @@
 #include <whiskermap/core/Angles.h>
+#include <whiskermap/core/MathCache.h>
 #include <whiskermap/model/Densities.h>
 
 #include <cmath>
@@ -20,23 +21,23 @@ double logSumExp(double a, double b)
 
 double logCell(double logDensity, const ModelParams& p)
 {
-	return 3 * std::log(2 * p.delta) + logDensity;  // eq. 19
+	return 3 * core::cachedLog(2 * p.delta) + logDensity;  // eq. 19
 }
 
-double logTablePrior(const ModelParams& p) { return std::log(p.c_T); }  // eq. 4
+double logTablePrior(const ModelParams& p) { return core::cachedLog(p.c_T); }  // eq. 4
 
 void tableCorner(const Table& t, int i, const ModelParams& p, double& x, double& y)
 {
 	const double lx = (i == 0 || i == 3 ? 0.5 : -0.5) * p.table_length;
 	const double ly = (i < 2 ? 0.5 : -0.5) * p.table_width;
-	const double c = std::cos(t.theta), s = std::sin(t.theta);
+	const auto [s, c] = core::cachedSinCos(t.theta);
 	x = t.x + c * lx - s * ly;
 	y = t.y + s * lx + c * ly;
 }
 
 void tableCorners(const Table& t, const ModelParams& p, double x[4], double y[4])
 {
-	const double c = std::cos(t.theta), s = std::sin(t.theta);
+	const auto [s, c] = core::cachedSinCos(t.theta);
 	for (int i = 0; i < 4; i++)
 	{
 		const double lx = (i == 0 || i == 3 ? 0.5 : -0.5) * p.table_length;
@@ -76,7 +77,7 @@ LegFit logLegGivenTable(const Leg& l, const Table& t, const ModelParams& p)
 						 sq(core::angleDiff(t.theta, l.theta, M_PI_2) / p.sigma_theta) +
 						 sq((t.leg_width - l.wx) / p.sigma_w) + sq((t.leg_width - l.wy) / p.sigma_w) +
 						 sq((t.texture - l.texture) / p.sigma_tau);
-	fit.logDensity = std::log(p.alpha_L) - delta;  // eq. 5
+	fit.logDensity = core::cachedLog(p.alpha_L) - delta;  // eq. 5
 	return fit;
 }
 
@@ -85,7 +86,7 @@ double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelPara
 	// eq. 7 with the face that explains the contact best: distance to that face (a segment)
 	// and the contact's normal against the face's outward normal (mod 360 deg). Faces k = 0..3
 	// have outward normals theta + k pi/2; in the leg frame the point is (lx, ly).
-	const double c = std::cos(l.theta), sn = std::sin(l.theta);
+	const auto [sn, c] = core::cachedSinCos(l.theta);
 	const double dx = s.x - l.x, dy = s.y - l.y;
 	const double lx = c * dx + sn * dy, ly = -sn * dx + c * dy, hx = l.wx / 2, hy = l.wy / 2;
 	const double ex = std::max(std::abs(lx) - hx, 0.0), ey = std::max(std::abs(ly) - hy, 0.0);
@@ -97,9 +98,9 @@ double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelPara
 		const double ak = a <= -M_PI ? a + 2 * M_PI : a;
 		best = std::min(best, faceDistance2[k] / sq(p.sigma_r) + sq(ak / p.sigma_theta));
 	}
-	return std::log(p.alpha_S) - best - sq((l.texture - s.texture) / p.sigma_tau);  // eq. 7
+	return core::cachedLog(p.alpha_S) - best - sq((l.texture - s.texture) / p.sigma_tau);  // eq. 7
 }
 
-double logLegNull(const ModelParams& p) { return std::log(p.c_L); }  // eq. 8
-double logShapeletNull(const ModelParams& p) { return std::log(p.c_S); }  // eq. 9
+double logLegNull(const ModelParams& p) { return core::cachedLog(p.c_L); }  // eq. 8
+double logShapeletNull(const ModelParams& p) { return core::cachedLog(p.c_S); }  // eq. 9
 }  // namespace whiskermap::model

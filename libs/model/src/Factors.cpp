@@ -1,12 +1,13 @@
+#include <whiskermap/core/MathCache.h>
 #include <whiskermap/model/Factors.h>
 
 #include <cmath>
 
 namespace whiskermap::model
 {
-double logMissingLegs(int missing, const ModelParams& p) { return missing * std::log(p.epsilon); }  // eq. 15
-double logSameCorner(int pairs, const ModelParams& p) { return pairs * std::log(p.epsilon); }  // eq. 17
-double logOverlap(int pairs, const ModelParams& p) { return pairs * std::log(p.epsilon); }  // eq. 16
+double logMissingLegs(int missing, const ModelParams& p) { return missing * core::cachedLog(p.epsilon); }  // eq. 15
+double logSameCorner(int pairs, const ModelParams& p) { return pairs * core::cachedLog(p.epsilon); }  // eq. 17
+double logOverlap(int pairs, const ModelParams& p) { return pairs * core::cachedLog(p.epsilon); }  // eq. 16
 
 double logTableConstraints(const CornerCounts& counts, const ModelParams& p)
 {

@@ -1,4 +1,5 @@
 #include <whiskermap/core/Angles.h>
+#include <whiskermap/core/MathCache.h>
 #include <whiskermap/model/Densities.h>
 #include <whiskermap/model/LegEvidence.h>
 
@@ -99,7 +100,7 @@ double LegEvidence::logLikelihood(const Leg& l, const ModelParams& p) const
 	}
 	delta += m_saa - 2 * d * m_sa + m_wa * d * d;  // normal vs face normal
 	delta += m_stt - 2 * l.texture * m_st + m_wt * l.texture * l.texture;  // texture
-	return m_count * std::log(p.alpha_S) - delta;  // eq. 7 summed
+	return m_count * core::cachedLog(p.alpha_S) - delta;  // eq. 7 summed
 }
 
 void LegEvidence::addCentreEquations(

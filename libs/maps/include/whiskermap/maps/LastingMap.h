@@ -30,6 +30,21 @@ class LastingMap
 		/** Unexplained contacts kept within one leg width of each other; older ones are
 		 *  forgotten (they never found a cause). */
 		uint32_t unexplained_per_spot = 4;
+		/** The local anneal's schedule (insertOpts local_*, doc/map-plugin.md): it starts
+		 *  from the map as it was with the new contacts associated, not from an empty board,
+		 *  so it runs cooler and shorter than a per-pose step. beta_end and the moves are the
+		 *  sampler's. */
+		struct TSchedule
+		{
+			double beta_start = 0.1;
+			uint32_t temperatures = 8, sweeps_per_temperature = 1, coldest_sweeps = 4, polish_sweeps = 2;
+			bool operator==(const TSchedule& o) const
+			{
+				return beta_start == o.beta_start && temperatures == o.temperatures &&
+					   sweeps_per_temperature == o.sweeps_per_temperature && coldest_sweeps == o.coldest_sweeps &&
+					   polish_sweeps == o.polish_sweeps;
+			}
+		} schedule;
 	};
 
 	/** What one insertion did. */
@@ -72,6 +87,7 @@ class LastingMap
 	// Reused across insertions (not copied: a copy rebuilds them).
 	std::unique_ptr<inference::BlackboardSampler> m_sampler;
 	model::ModelParams m_samplerModel;
+	TOptions::TSchedule m_samplerSchedule;
 	std::unique_ptr<model::LastingState::Region> m_region;
 	inference::TableExistence m_existence;
 	std::vector<model::Id> m_new, m_newTables, m_newLegs;

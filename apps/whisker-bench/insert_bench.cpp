@@ -1,0 +1,90 @@
+// whisker-insert-bench: the time of each insertion into a CHierarchicalObjectMap (lasting mode
+// by default), over a whole rawlog, as a distribution: median, p95, max and mean wall time and
+// thread CPU time per sweep, the map's size at the end and the process's peak RSS. The sweeps
+// are streamed (one in memory at a time). Figures and commands: doc/benchmarks.md, "Lasting
+// map: insertion time and scaling" (scripts/bench-lasting.sh).
+#include <CLI/CLI.hpp>
+#include <mrpt/maps/CMultiMetricMap.h>
+#include <sys/resource.h>
+#include <whiskermap/cli/runApp.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/maps/CHierarchicalObjectMap.h>
+#include <whiskermap/maps/MapConfig.h>
+#include <whiskermap/obs/RawlogReader.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <numeric>
+#include <vector>
+
+using namespace whiskermap;
+
+namespace
+{
+double threadCpuMs()
+{
+	timespec t{};
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+	return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+
+/** The q-quantile (nearest rank) of sorted values. */
+double quantile(const std::vector<double>& sorted, double q)
+{
+	const size_t i = static_cast<size_t>(std::ceil(q * static_cast<double>(sorted.size())));
+	return sorted[std::min(sorted.size() - 1, i == 0 ? 0 : i - 1)];
+}
+
+void report(const char* what, std::vector<double> v)
+{
+	std::sort(v.begin(), v.end());
+	const double mean = std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+	std::printf(
+		"  %s ms per insertion: median %.4f, p95 %.4f, max %.4f, mean %.4f\n", what, quantile(v, 0.5),
+		quantile(v, 0.95), v.back(), mean);
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	CLI::App app{"Times every insertion of a rawlog's sweeps into a CHierarchicalObjectMap"};
+	std::string rawlog, config = WHISKERMAP_SOURCE_DIR "/config/whisker-map.ini", mode;
+	app.add_option("rawlog", rawlog, "Rawlog of whisker sweeps (whisker-sim's output)")->required();
+	app.add_option("-c,--config", config, "Map configuration (default: the shipped config/whisker-map.ini)");
+	app.add_option("--mode", mode, "Override the map's mode: lasting or per_pose")
+		->check(CLI::IsMember({"lasting", "per_pose"}));
+	return cli::runApp(app, argc, argv, "whisker-insert-bench", [&] {
+		mrpt::maps::CMultiMetricMap mm(maps::MapConfig::load(config));
+		auto map = mm.mapByClass<maps::CHierarchicalObjectMap>();
+		if (!map) throw core::Error(config + ": no hierarchicalObjectMap in [MetricMap]");
+		map->insertionOptions.keep_history = false;  // as whisker-map: memory bounded by the map
+		using Mode = maps::CHierarchicalObjectMap::TInsertionOptions::TMode;
+		if (!mode.empty()) map->insertionOptions.mode = mode == "lasting" ? Mode::Lasting : Mode::PerPose;
+		obs::RawlogReader reader(rawlog);
+		std::vector<double> wall, cpu;
+		wall.reserve(reader.summary().sweepCount), cpu.reserve(reader.summary().sweepCount);
+		obs::RawlogReader::Sweep s;
+		while (reader.next(s))
+		{
+			const mrpt::poses::CPose3D pose(s.robotPose);
+			const double c0 = threadCpuMs();
+			const auto t0 = std::chrono::steady_clock::now();
+			map->insertObservation(*s.obs, pose);
+			wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+			cpu.push_back(threadCpuMs() - c0);
+		}
+		if (wall.empty()) throw core::Error(rawlog + ": no whisker sweeps");
+		rusage usage{};
+		getrusage(RUSAGE_SELF, &usage);
+		std::printf(
+			"%s (%s): %zu insertions, %zu map objects, peak RSS %.1f MB\n", rawlog.c_str(),
+			map->lasting() ? "lasting" : "per_pose", wall.size(), map->mapObjects().size(),
+			static_cast<double>(usage.ru_maxrss) / 1024.0);
+		report("wall", wall);
+		report("cpu ", cpu);
+		return 0;
+	});
+}
