@@ -69,6 +69,25 @@ std::string indent(std::string json)
 }
 }  // namespace
 
+void MapOutputs::pictureBounds(const std::string& input, const world::World* w, TSettings& s)
+{
+	if (w)
+	{
+		s.x0 = w->x_min, s.x1 = w->x_max, s.y0 = w->y_min, s.y1 = w->y_max;
+		return;
+	}
+	s.x0 = s.y0 = 1e18, s.x1 = s.y1 = -1e18;
+	double reach = 0;
+	obs::RawlogReader::forEach(input, [&](const obs::RawlogReader::Sweep& sw) {
+		s.x0 = std::min(s.x0, sw.robotPose.x()), s.x1 = std::max(s.x1, sw.robotPose.x());
+		s.y0 = std::min(s.y0, sw.robotPose.y()), s.y1 = std::max(s.y1, sw.robotPose.y());
+		for (const auto& wh : sw.obs->whiskers)
+			reach = std::max(reach, std::hypot(wh.mount_x, wh.mount_y) + wh.length);
+	});
+	const double margin = reach + 0.2;
+	s.x0 -= margin, s.x1 += margin, s.y0 -= margin, s.y1 += margin;
+}
+
 MapOutputs::MapOutputs(OutputDir& out, const maps::CHierarchicalObjectMap& map, const TSettings& s)
 	: m_out(out),
 	  m_map(map),
@@ -223,7 +242,7 @@ std::string MapOutputs::finish(double wallSeconds)
 		f << metricsJson;
 		if (!f) throw core::Error("metrics.json: write failed");
 	}
-	writeSummary(m_out.path("summary.json"), wallSeconds, mapped.size(), candidates.size(), metricsJson);
+	writeSummary(m_out.path(m_s.summaryName), wallSeconds, mapped.size(), candidates.size(), metricsJson);
 	return text;
 }
 

@@ -28,26 +28,6 @@ struct Options
 	bool quiet = false, simpleMap = false, reverse = false;
 };
 
-/** Picture bounds: the arena when known, else the robot positions plus whisker reach. */
-void bounds(const std::string& input, const world::World* w, MapOutputs::TSettings& s)
-{
-	if (w)
-	{
-		s.x0 = w->x_min, s.x1 = w->x_max, s.y0 = w->y_min, s.y1 = w->y_max;
-		return;
-	}
-	s.x0 = s.y0 = 1e18, s.x1 = s.y1 = -1e18;
-	double reach = 0;
-	obs::RawlogReader::forEach(input, [&](const obs::RawlogReader::Sweep& sw) {
-		s.x0 = std::min(s.x0, sw.robotPose.x()), s.x1 = std::max(s.x1, sw.robotPose.x());
-		s.y0 = std::min(s.y0, sw.robotPose.y()), s.y1 = std::max(s.y1, sw.robotPose.y());
-		for (const auto& wh : sw.obs->whiskers)
-			reach = std::max(reach, std::hypot(wh.mount_x, wh.mount_y) + wh.length);
-	});
-	const double margin = reach + 0.2;
-	s.x0 -= margin, s.x1 += margin, s.y0 -= margin, s.y1 += margin;
-}
-
 int run(Options& o)
 {
 	// Everything that can be wrong with the inputs is checked before any output is made.
@@ -70,7 +50,7 @@ int run(Options& o)
 	settings.input = o.input, settings.config = o.config, settings.world = world ? &*world : nullptr;
 	settings.snapshotPose = o.snapshotPose, settings.snapshotTemperature = o.snapshotTemperature;
 	settings.quiet = o.quiet, settings.simpleMap = o.simpleMap, settings.jobs = o.jobs;
-	bounds(o.input, settings.world, settings);  // also verifies the whole rawlog (gzip check)
+	MapOutputs::pictureBounds(o.input, settings.world, settings);  // also verifies the whole rawlog (gzip check)
 
 	const auto t0 = std::chrono::steady_clock::now();
 	OutputDir out(o.outdir);

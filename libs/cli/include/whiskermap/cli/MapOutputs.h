@@ -31,7 +31,12 @@ class MapOutputs
 		bool quiet = false;
 		bool simpleMap = false;  ///< also write map.simplemap (keeps every sweep in memory)
 		unsigned jobs = 1;
+		std::string summaryName = "summary.json";  ///< file name of the summary
 	};
+
+	/** Picture bounds into `s`: the arena of `w` when given, else the robot positions of the
+	 *  rawlog plus the whiskers' reach (reads the whole rawlog, verifying it). */
+	static void pictureBounds(const std::string& input, const world::World* w, TSettings& s);
 
 	MapOutputs(OutputDir& out, const maps::CHierarchicalObjectMap& map, const TSettings& s);
 
