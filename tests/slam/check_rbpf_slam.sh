@@ -11,6 +11,11 @@ command -v rbpf-slam >/dev/null || { echo "FAIL: rbpf-slam not installed (Debian
 # 120 sweeps = 240 entries (an action and a sensory frame each).
 rawlog-edit -p "$obslib" --cut --to-index 239 -i "$src/datasets/slam/paper_arena_action-sf.rawlog" \
   -o "$work/short.rawlog" >/dev/null 2>&1 </dev/null
+# The map sections are config/whisker-map.ini's, renamed, with keep_history off.
+diff <(sed -n '/^\[MappingApplication_/,$p' "$src/config/rbpf-slam.ini") \
+     <(sed -n '/^\[MetricMap_/,$p' "$src/config/whisker-map.ini" | sed 's/^\[MetricMap_/[MappingApplication_/; s/^keep_history = true/keep_history = false/') ||
+  { echo "FAIL: config/rbpf-slam.ini's map sections differ from config/whisker-map.ini's"; exit 1; }
+grep -q '^keep_history = false' "$src/config/rbpf-slam.ini" || { echo "FAIL: keep_history not off"; exit 1; }
 cd "$work"
 sed 's/^sampleSize=30$/sampleSize=8/' "$src/config/rbpf-slam.ini" > rbpf-slam-8.ini
 LD_PRELOAD="$maps" timeout 300 rbpf-slam rbpf-slam-8.ini short.rawlog </dev/null >rbpf.log 2>&1 ||

@@ -60,8 +60,8 @@ void drawPaths(OutputDir& out, const SlamOutputs::TRun& run, const MapOutputs::T
 	if (run.truth) img.path(poses(*run.truth), TRUTH, 1);
 	img.path(poses(run.estimated), ESTIMATE, 2);
 	img.caption(
-		std::filesystem::path(run.input).filename().string() + ": SLAM estimate (red), odometry (orange)" +
-		(run.truth ? ", truth (blue)" : "") + ", best particle's map (grey)" + (s.world ? ", true tables (thin blue)" : ""));
+		std::filesystem::path(run.input).filename().string() + ": SLAM (red), odometry (orange)" +
+		(run.truth ? ", truth (blue)" : "") + ", map (grey)" + (s.world ? ", true tables" : ""));
 	img.save(out.path("paths.png"));
 }
 

@@ -60,17 +60,20 @@ void RbpfSlam::step(const obs::RawlogReader::Sweep& sweep)
 	mrpt::obs::CSensoryFrame frame;
 	frame.insert(sweep.obs);
 
-	m_builder.processActionObservation(actions, frame);
-	TStep s;
+	// Resampling decided at the previous step happens now, before moving the particles: the
+	// weights after the last sweep stay as the filter left them, so the best particle at the
+	// end is the most probable one, not a pick among equal weights.
 	auto& pdf = m_builder.mapPDF;
-	s.ess = pdf.ESS();
-	if (s.ess < m_params.resample_ess)
+	if (m_resamplePending)
 	{
 		mrpt::bayes::CParticleFilter::TParticleFilterOptions pf;
 		pf.resamplingMethod = m_params.resampling;
 		pdf.performResampling(pf);
-		s.resampled = true;
 	}
+	m_builder.processActionObservation(actions, frame);
+	TStep s;
+	s.ess = pdf.ESS();
+	s.resampled = m_resamplePending = s.ess < m_params.resample_ess;
 	s.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 	m_steps.push_back(s);
 }
@@ -100,8 +103,8 @@ std::vector<mrpt::poses::CPose2D> RbpfSlam::bestPath() const
 
 const maps::CHierarchicalObjectMap& RbpfSlam::bestMap() const
 {
-	const auto* mm = m_builder.mapPDF.getCurrentMostLikelyMetricMap();
-	const auto map = mm ? mm->mapByClass<maps::CHierarchicalObjectMap>() : nullptr;
+	if (m_steps.empty()) throw core::Error("RBPF: no sweep processed yet");
+	const auto map = m_builder.mapPDF.m_particles[bestParticle()].d->mapTillNow.mapByClass<maps::CHierarchicalObjectMap>();
 	if (!map) throw core::Error("RBPF: the particles hold no hierarchicalObjectMap");
 	return *map;
 }

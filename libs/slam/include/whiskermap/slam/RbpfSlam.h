@@ -19,8 +19,8 @@ namespace whiskermap::slam
  *  increment between consecutive odometry poses becomes a CActionRobotMovement2D with the
  *  motion model of TSlamParams::motion. The first sweep's odometry pose is the known start.
  *  Every sweep is localised and inserted (no distance thresholds), so the path has one pose
- *  per sweep. The filter resamples (MRPT's performResampling) when the normalised effective
- *  sample size falls below resample_ess; the ESS is recorded before that decision.
+ *  per sweep. When the normalised effective sample size after a sweep falls below
+ *  resample_ess, the particles are resampled (MRPT's performResampling) before the next one.
  *
  *  Reproducible: the constructor seeds MRPT's global random generator with params.seed
  *  (every draw of the filter comes from it; the maps' samplers have their own seeds). */
@@ -31,7 +31,7 @@ class RbpfSlam
 	{
 		double ms = 0;  ///< wall time of the filter step (prediction, weights, resampling, map updates)
 		double ess = 1;  ///< normalised effective sample size before resampling, in (0, 1]
-		bool resampled = false;
+		bool resampled = false;  ///< ESS below resample_ess: the particles are resampled before the next sweep
 	};
 
 	RbpfSlam(const TSlamParams& params, const mrpt::maps::TSetOfMetricMapInitializers& maps);
@@ -53,5 +53,6 @@ class RbpfSlam
 	mrpt::slam::CMetricMapBuilderRBPF m_builder;
 	std::optional<mrpt::poses::CPose2D> m_lastOdometry;
 	std::vector<TStep> m_steps;
+	bool m_resamplePending = false;
 };
 }  // namespace whiskermap::slam
