@@ -59,9 +59,9 @@ void drawPaths(OutputDir& out, const SlamOutputs::TRun& run, const MapOutputs::T
 	img.path(poses(run.odometry), ODOMETRY, 1);
 	if (run.truth) img.path(poses(*run.truth), TRUTH, 1);
 	img.path(poses(run.estimated), ESTIMATE, 2);
-	img.caption(
-		std::filesystem::path(run.input).filename().string() + ": SLAM (red), odometry (orange)" +
-		(run.truth ? ", truth (blue)" : "") + ", map (grey)" + (s.world ? ", true tables" : ""));
+	img.caption(std::filesystem::path(run.input).filename().string() + ": paths and the best particle's map");
+	img.caption(std::string("SLAM (red), odometry (orange)") + (run.truth ? ", truth (blue)" : "") + ", map (grey)" +
+				(s.world ? ", true tables" : ""));
 	img.save(out.path("paths.png"));
 }
 
