@@ -103,11 +103,10 @@ int run(Options& o)
 	obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
 		if (k >= n) return;
 		slam.step(sw);
-		if (bar && (++k % 10 == 0 || k == n))
+		k++;
+		if (bar && (k % 10 == 0 || k == n))
 			std::fprintf(stderr, "\rwhisker-slam: %zu/%zu sweeps, %u particles, ESS %.2f", k, n, params.particles,
 						 slam.steps().back().ess);
-		else if (!bar)
-			k++;
 	});
 	if (bar) std::fprintf(stderr, "\n");
 	const auto best = slam.bestPath();
