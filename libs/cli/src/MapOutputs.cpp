@@ -63,6 +63,17 @@ void drawBlackboard(
 
 }  // namespace
 
+void MapOutputs::pictureBounds(const obs::RawlogReader::Summary& in, const world::World* w, TSettings& s)
+{
+	if (w)
+	{
+		s.x0 = w->x_min, s.x1 = w->x_max, s.y0 = w->y_min, s.y1 = w->y_max;
+		return;
+	}
+	const double margin = in.maxReach + 0.2;
+	s.x0 = in.x0 - margin, s.x1 = in.x1 + margin, s.y0 = in.y0 - margin, s.y1 = in.y1 + margin;
+}
+
 MapOutputs::MapOutputs(OutputDir& out, const maps::CHierarchicalObjectMap& map, const TSettings& s)
 	: m_out(out),
 	  m_map(map),
@@ -210,7 +221,7 @@ std::string MapOutputs::finish(double wallSeconds)
 		f << metricsJson;
 		if (!f) throw core::Error("metrics.json: write failed");
 	}
-	writeSummary(m_out.path("summary.json"), wallSeconds, mapped.size(), candidates.size(), metricsJson);
+	writeSummary(m_out.path(m_s.summaryName), wallSeconds, mapped.size(), candidates.size(), metricsJson);
 	return text;
 }
 

@@ -30,18 +30,6 @@ struct Options
 	bool quiet = false, simpleMap = false, reverse = false;
 };
 
-/** Picture bounds: the arena when known, else the robot positions plus whisker reach. */
-void bounds(const obs::RawlogReader::Summary& in, const world::World* w, MapOutputs::TSettings& s)
-{
-	if (w)
-	{
-		s.x0 = w->x_min, s.x1 = w->x_max, s.y0 = w->y_min, s.y1 = w->y_max;
-		return;
-	}
-	const double margin = in.maxReach + 0.2;
-	s.x0 = in.x0 - margin, s.x1 = in.x1 + margin, s.y0 = in.y0 - margin, s.y1 = in.y1 + margin;
-}
-
 /** Tables lie within whisker reach of the robot: refuse early a log whose map could not be
  *  exported as an OctoMap (its 16-bit keys span +-range around the origin). */
 void checkOctreeRange(const std::string& input, const obs::RawlogReader::Summary& in, double resolution)
@@ -81,7 +69,7 @@ int run(Options& o)
 	obs::RawlogReader reader(o.input);  // checks the whole rawlog before any work
 	const auto& summary = reader.summary();
 	checkOctreeRange(o.input, summary, map->renderOptions.octomap_resolution);
-	bounds(summary, settings.world, settings);
+	MapOutputs::pictureBounds(summary, settings.world, settings);
 	settings.sweeps = summary.sweepCount;
 	settings.maxSigmaR = summary.maxSigmaR;
 	if (summary.sweepCount == 0)

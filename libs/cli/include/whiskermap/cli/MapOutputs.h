@@ -35,7 +35,11 @@ class MapOutputs
 		unsigned jobs = 1;
 		size_t sweeps = 0;  ///< sweeps the run will give (RawlogReader::Summary), for map.simplemap
 		double maxSigmaR = 0;  ///< largest sigma_r of the log, for the identifiability gate
+		std::string summaryName = "summary.json";  ///< file name of the summary
 	};
+
+	/** Picture bounds: the arena when known, else the robot positions plus whisker reach. */
+	static void pictureBounds(const obs::RawlogReader::Summary& in, const world::World* w, TSettings& s);
 
 	MapOutputs(OutputDir& out, const maps::CHierarchicalObjectMap& map, const TSettings& s);
 

@@ -1,0 +1,166 @@
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <whiskermap/cli/MapOutputs.h>
+#include <whiskermap/cli/MapRunner.h>
+#include <whiskermap/cli/OutputDir.h>
+#include <whiskermap/cli/SlamOutputs.h>
+#include <whiskermap/cli/WhiskerSlamApp.h>
+#include <whiskermap/cli/runApp.h>
+#include <whiskermap/core/ConfigPaths.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/maps/MapConfig.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+
+namespace whiskermap::cli
+{
+namespace
+{
+namespace fs = std::filesystem;
+using Sweep = obs::RawlogReader::Sweep;
+
+struct Options
+{
+	std::string input, config, outdir, truth, world;
+	std::optional<unsigned> particles;
+	std::optional<uint64_t> seed;
+	size_t sweeps = 0;  ///< 0: all
+	bool quiet = false;
+};
+
+/** The true path beside the rawlog, as whisker-sim writes it, if there is one. */
+std::string truthBeside(const std::string& rawlog)
+{
+	const fs::path p(rawlog);
+	const fs::path gt = p.parent_path() / (p.stem().string() + "_ground_truth_robot_path.txt");
+	return fs::exists(gt) ? gt.string() : "";
+}
+
+/** Every particle's map: no history kept (the outputs come from a rebuild). */
+void forgetHistory(mrpt::maps::TSetOfMetricMapInitializers& inits)
+{
+	for (auto& def : inits)
+		if (auto* ours = dynamic_cast<maps::CHierarchicalObjectMap::TMapDefinition*>(def.get()))
+			ours->insertionOptions.keep_history = false;
+}
+
+bool sameTables(const std::vector<world::Table>& a, const std::vector<world::Table>& b)
+{
+	if (a.size() != b.size()) return false;
+	for (size_t i = 0; i < a.size(); i++)
+		if (a[i].x != b[i].x || a[i].y != b[i].y || a[i].yaw != b[i].yaw) return false;
+	return true;
+}
+
+int run(Options& o)
+{
+	// Everything that can be wrong with the inputs is checked before any output is made.
+	if (o.config.empty()) o.config = core::ConfigPaths::find("whisker-slam.ini");
+	auto params = slam::TSlamParams::load(o.config);
+	if (o.particles && *o.particles == 0) throw core::Error("--particles 0: the filter needs at least one particle");
+	if (o.particles) params.particles = *o.particles;
+	if (o.seed) params.seed = *o.seed;
+	auto inits = maps::MapConfig::load(params.map_config);
+	forgetHistory(inits);
+	std::optional<world::World> world;
+	if (!o.world.empty()) world = world::World::load(o.world);
+	SlamOutputs::TRun result;
+	result.input = o.input, result.config = o.config, result.mapConfig = params.map_config, result.params = &params;
+	result.truthPath = o.truth.empty() ? truthBeside(o.input) : o.truth;
+	// The odometry of every sweep (this pass also verifies the whole rawlog).
+	const auto contents = obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
+		if (o.sweeps == 0 || result.odometry.size() < o.sweeps)
+			result.odometry.push_back({mrpt::Clock::toDouble(sw.obs->timestamp), sw.robotPose, 0});
+	});
+	if (contents.sweepCount == 0)
+		throw core::Error(o.input + ": holds no whisker observations (CObservationWhiskerContacts)");
+	const size_t n = result.odometry.size();
+	if (!result.truthPath.empty())
+	{
+		auto truth = world::PathLog::read(result.truthPath);
+		if (truth.size() < n)
+			throw core::Error(result.truthPath + ": " + std::to_string(truth.size()) + " poses for " +
+							  std::to_string(n) + " sweeps");
+		if (o.sweeps) truth.resize(n);
+		result.truth = std::move(truth);
+	}
+	MapOutputs::TSettings settings;
+	settings.input = o.input, settings.config = params.map_config, settings.world = world ? &*world : nullptr;
+	settings.quiet = o.quiet, settings.summaryName = "map_summary.json";
+	settings.sweeps = n, settings.maxSigmaR = contents.maxSigmaR;
+	MapOutputs::pictureBounds(contents, settings.world, settings);
+
+	// The filter.
+	const auto t0 = std::chrono::steady_clock::now();
+	OutputDir out(o.outdir);
+	slam::RbpfSlam slam(params, inits);
+	result.slam = &slam;
+	const bool bar = !o.quiet && ::isatty(STDERR_FILENO);
+	size_t k = 0;
+	obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
+		if (k >= n) return;
+		slam.step(sw);
+		k++;
+		if (bar && (k % 10 == 0 || k == n))
+			std::fprintf(stderr, "\rwhisker-slam: %zu/%zu sweeps, %u particles, ESS %.2f", k, n, params.particles,
+						 slam.steps().back().ess);
+	});
+	if (bar) std::fprintf(stderr, "\n");
+	const auto best = slam.bestPath();
+	for (size_t i = 0; i < n; i++) result.estimated.push_back({result.odometry[i].t, best[i], 0});
+
+	// The best particle's map, rebuilt by whisker-map's runner and writer at the best path's
+	// poses (the same insertions the particle made, so the same map: checked below).
+	mrpt::maps::CMultiMetricMap multimap(inits);
+	auto map = multimap.mapByClass<maps::CHierarchicalObjectMap>();
+	MapOutputs outputs(out, *map, settings);
+	MapRunner runner(multimap, *map, 1, [&](size_t i, const Sweep& sw, double ms) { outputs.onStep(i, sw, ms); });
+	k = 0;
+	obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
+		if (k < n) runner.add({best[k++], sw.obs});
+	});
+	runner.flush();
+	result.mapTables = map->mapTables();
+	result.mapMatches = sameTables(result.mapTables, slam.bestMap().mapTables());
+	result.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+	const std::string text = outputs.finish(result.wallSeconds);
+	const std::string line = SlamOutputs::write(out, result, settings);
+	out.commit();
+	if (!o.quiet) std::printf("%swhisker-slam: %s -> %s\n", text.c_str(), line.c_str(), o.outdir.c_str());
+	return 0;
+}
+}  // namespace
+
+int WhiskerSlamApp::main(int argc, char** argv)
+{
+	CLI::App app{
+		"whisker-slam: tactile SLAM. Runs MRPT's Rao-Blackwellised particle filter "
+		"(CMetricMapBuilderRBPF) on a rawlog (either layout), each particle holding a "
+		"hierarchicalObjectMap; the particles move with the odometry's motion model and are "
+		"weighed by the sweep likelihood. Writes, in OUTDIR: estimated_path.txt (the best "
+		"particle's path) and odometry_path.txt, one line per sweep in the ground-truth "
+		"columns; that particle's map as whisker-map writes it (map_tables.csv, map_candidates.csv, "
+		"map.png, map.3Dscene, map.bt, map_summary.json, with --world metrics.json); paths.png; "
+		"summary.json (doc/slam.md)."};
+	Options o;
+	app.add_option("-i,--input", o.input, "Input rawlog with CObservationWhiskerContacts sweeps and odometry")->required();
+	app.add_option("-o,--out", o.outdir, "Output folder (created; files in it are replaced only when the run succeeds)")
+		->required();
+	app.add_option("-c,--config", o.config,
+				   "whisker-slam .ini: particles, seed, map config, motion model, resampling (default: the "
+				   "shipped config/whisker-slam.ini)");
+	app.add_option("--particles", o.particles, "Particle count (overrides [slam] particles)");
+	app.add_option("--seed", o.seed, "Seed of MRPT's random generator (overrides [slam] seed); same seed, same output");
+	app.add_option("--truth", o.truth,
+				   "True path file (timestamp x y yaw per sweep) for paths.png and the figures in summary.json "
+				   "(default: <rawlog>_ground_truth_robot_path.txt beside the rawlog, if there)");
+	app.add_option("--world", o.world, "Ground-truth world .ini: drawn in the pictures, the map scored against it");
+	app.add_option("--sweeps", o.sweeps, "Use only the first N sweeps (0: all)")->capture_default_str();
+	app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
+	return runApp(app, argc, argv, "whisker-slam", [&] { return run(o); });
+}
+}  // namespace whiskermap::cli

@@ -1,0 +1,58 @@
+#pragma once
+#include <mrpt/maps/TMetricMapInitializer.h>
+#include <mrpt/slam/CMetricMapBuilderRBPF.h>
+#include <whiskermap/maps/CHierarchicalObjectMap.h>
+#include <whiskermap/obs/RawlogReader.h>
+#include <whiskermap/slam/TSlamParams.h>
+
+#include <optional>
+#include <vector>
+
+namespace whiskermap::slam
+{
+/** Tactile SLAM with MRPT's own Rao-Blackwellised particle filter: a CMetricMapBuilderRBPF
+ *  whose particles each hold a CMultiMetricMap with a CHierarchicalObjectMap (standard
+ *  proposal: particles move by samples of the odometry increment's Gaussian, are weighted
+ *  by the map's sweep likelihood, then every particle's map inserts the sweep at its pose).
+ *
+ *  Sweeps come one by one with the odometry pose the rawlog gives them (either layout); the
+ *  increment between consecutive odometry poses becomes a CActionRobotMovement2D with the
+ *  motion model of TSlamParams::motion. The first sweep's odometry pose is the known start.
+ *  Every sweep is localised and inserted (no distance thresholds), so the path has one pose
+ *  per sweep. When the normalised effective sample size after a sweep falls below
+ *  resample_ess, the particles are resampled (MRPT's performResampling) before the next one.
+ *
+ *  Reproducible: the constructor seeds MRPT's global random generator with params.seed
+ *  (every draw of the filter comes from it; the maps' samplers have their own seeds). */
+class RbpfSlam
+{
+   public:
+	struct TStep
+	{
+		double ms = 0;  ///< wall time of the filter step (prediction, weights, resampling, map updates)
+		double ess = 1;  ///< normalised effective sample size before resampling, in (0, 1]
+		bool resampled = false;  ///< ESS below resample_ess: the particles are resampled before the next sweep
+	};
+
+	RbpfSlam(const TSlamParams& params, const mrpt::maps::TSetOfMetricMapInitializers& maps);
+
+	/** One filter step on a sweep. */
+	void step(const obs::RawlogReader::Sweep& sweep);
+
+	const std::vector<TStep>& steps() const { return m_steps; }
+	/** The path of the particle with the highest weight: one pose per sweep so far. */
+	std::vector<mrpt::poses::CPose2D> bestPath() const;
+	/** That particle's map. */
+	const maps::CHierarchicalObjectMap& bestMap() const;
+	const mrpt::maps::CMultiMetricMapPDF& particles() const { return m_builder.mapPDF; }
+
+   private:
+	size_t bestParticle() const;
+
+	TSlamParams m_params;
+	mrpt::slam::CMetricMapBuilderRBPF m_builder;
+	std::optional<mrpt::poses::CPose2D> m_lastOdometry;
+	std::vector<TStep> m_steps;
+	bool m_resamplePending = false;
+};
+}  // namespace whiskermap::slam

@@ -1,0 +1,27 @@
+#pragma once
+#include <mrpt/bayes/CParticleFilter.h>
+#include <whiskermap/world/OdometryNoise.h>
+
+#include <cstdint>
+#include <string>
+
+namespace whiskermap::slam
+{
+/** whisker-slam's settings: the [slam] section of config/whisker-slam.ini (doc/slam.md).
+ *  Read strictly: unknown keys and sections are errors naming the file. */
+struct TSlamParams
+{
+	unsigned particles = 30;  ///< particle count (each holds a whole map)
+	uint64_t seed = 1;  ///< seeds MRPT's global random generator (motion samples, resampling)
+	std::string map_config;  ///< the CMultiMetricMap .ini of every particle's map (resolved path)
+	world::OdometryNoise motion;  ///< odometry preset whose matched Gaussian model moves the particles
+	double motion_noise_scale = 1;  ///< multiplies the motion model's std-devs (a1..a4)
+	double resample_ess = 0.5;  ///< resample when the normalised effective sample size drops below this
+	mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling =
+		mrpt::bayes::CParticleFilter::prSystematic;
+
+	/** Reads `path`. Relative `map_config` and `odometry_model` files are looked up next to
+	 *  it first, then as shipped presets (config/, config/odometry/). */
+	static TSlamParams load(const std::string& path);
+};
+}  // namespace whiskermap::slam

@@ -1,0 +1,49 @@
+#include <whiskermap/core/ConfigPaths.h>
+#include <whiskermap/core/IniSection.h>
+#include <whiskermap/slam/TSlamParams.h>
+
+#include <filesystem>
+#include <map>
+
+namespace whiskermap::slam
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+/** `value` next to the .ini if such a file exists there, else `value` as given. */
+std::string besideIni(const std::string& ini, const std::string& value)
+{
+	if (value.empty() || fs::path(value).is_absolute()) return value;
+	const fs::path near = fs::path(ini).parent_path() / value;
+	return fs::exists(near) ? near.string() : value;
+}
+}  // namespace
+
+TSlamParams TSlamParams::load(const std::string& path)
+{
+	using PF = mrpt::bayes::CParticleFilter;
+	const auto file = core::openIniFile(path, "slam config file");
+	core::rejectUnknownSections(*file, {"slam"}, "", path);
+	core::IniSection sec(*file, "slam", path);
+	TSlamParams p;
+	p.particles = static_cast<unsigned>(sec.integer("particles", p.particles, 1, 100000));
+	p.seed = static_cast<uint64_t>(sec.integer("seed", static_cast<long>(p.seed), 0, 1L << 53));
+	const std::string mapConfig = besideIni(path, sec.text("map_config", "whisker-map.ini"));
+	p.map_config = fs::exists(mapConfig) ? mapConfig : core::ConfigPaths::find(mapConfig);
+	p.motion = world::OdometryNoise::load(besideIni(path, sec.text("odometry_model", "default")));
+	if (!p.motion.matched_model) sec.fail("odometry_model", "the odometry file has no [motion_model] section");
+	p.motion_noise_scale = sec.number("motion_noise_scale", p.motion_noise_scale, 0.01, 100);
+	p.resample_ess = sec.number("resample_ess", p.resample_ess, 0, 1);
+	const std::map<std::string, PF::TParticleResamplingAlgorithm> methods = {
+		{"multinomial", PF::prMultinomial}, {"residual", PF::prResidual},
+		{"stratified", PF::prStratified}, {"systematic", PF::prSystematic}};
+	const std::string method = sec.text("resampling", "systematic");
+	const auto it = methods.find(method);
+	if (it == methods.end())
+		sec.fail("resampling", "'" + method + "' is not one of multinomial, residual, stratified, systematic");
+	p.resampling = it->second;
+	sec.finish();
+	return p;
+}
+}  // namespace whiskermap::slam

@@ -1,0 +1,123 @@
+#include <gtest/gtest.h>
+#include <mrpt/maps/CMultiMetricMap.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/maps/MapConfig.h>
+#include <whiskermap/slam/RbpfSlam.h>
+
+#include "../TempDirTest.h"
+
+#include <fstream>
+
+using namespace whiskermap;
+
+namespace
+{
+const std::string SRC = WHISKERMAP_SOURCE_DIR;
+const std::string SLAM_INI = SRC + "/config/whisker-slam.ini";
+
+/** The first `n` sweeps of the shipped default-odometry paper-arena SLAM log. */
+std::vector<obs::RawlogReader::Sweep> firstSweeps(size_t n)
+{
+	auto sweeps = obs::RawlogReader::read(SRC + "/datasets/slam/paper_arena_obs.rawlog").sweeps;
+	sweeps.resize(n);
+	return sweeps;
+}
+
+std::vector<mrpt::poses::CPose2D> run(slam::TSlamParams p, const std::vector<obs::RawlogReader::Sweep>& sweeps)
+{
+	slam::RbpfSlam s(p, maps::MapConfig::load(p.map_config));
+	for (const auto& sw : sweeps) s.step(sw);
+	return s.bestPath();
+}
+
+class TSlamParamsTest : public test::TempDirTest
+{
+   protected:
+	std::string ini(const std::string& text)
+	{
+		std::ofstream(path("s.ini")) << text;
+		return path("s.ini");
+	}
+};
+}  // namespace
+
+TEST(TSlamParams, ShippedConfigLoads)
+{
+	const auto p = slam::TSlamParams::load(SLAM_INI);
+	EXPECT_EQ(p.particles, 30u);
+	EXPECT_EQ(p.seed, 1u);
+	EXPECT_EQ(p.map_config, SRC + "/config/whisker-map.ini");  // beside the .ini
+	EXPECT_TRUE(p.motion.matched_model);
+	EXPECT_DOUBLE_EQ(p.motion.translation_noise, 0.05);  // the default odometry preset
+	EXPECT_EQ(p.resampling, mrpt::bayes::CParticleFilter::prSystematic);
+}
+
+TEST_F(TSlamParamsTest, StrictKeysAndValues)
+{
+	EXPECT_NO_THROW(slam::TSlamParams::load(ini("[slam]\nodometry_model = poor\nresampling = residual\n")));
+	const auto p = slam::TSlamParams::load(ini("[slam]\nodometry_model = poor\n"));
+	EXPECT_DOUBLE_EQ(p.motion.translation_noise, 0.10);
+	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nparticle = 3\n")), core::Error);
+	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nresample_ess = 1.5\n")), core::Error);
+	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\n[other]\n")), core::Error);
+	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nodometry_model = bumpy\n")), core::Error);
+	EXPECT_THROW(slam::TSlamParams::load(path("missing.ini")), core::Error);
+}
+
+TEST(RbpfSlam, OnePosePerSweepFromTheKnownStart)
+{
+	auto p = slam::TSlamParams::load(SLAM_INI);
+	p.particles = 4;
+	const auto sweeps = firstSweeps(40);
+	slam::RbpfSlam s(p, maps::MapConfig::load(p.map_config));
+	for (const auto& sw : sweeps) s.step(sw);
+	const auto path = s.bestPath();
+	ASSERT_EQ(path.size(), sweeps.size());
+	ASSERT_EQ(s.steps().size(), sweeps.size());
+	// The first pose is the start plus one step's motion noise (millimetres).
+	EXPECT_LT(path[0].distanceTo(sweeps[0].robotPose), 0.01);
+	for (const auto& st : s.steps()) EXPECT_TRUE(st.ess > 0 && st.ess <= 1 + 1e-9);
+	EXPECT_EQ(s.particles().particlesCount(), 4u);
+}
+
+TEST(RbpfSlam, SameSeedSamePathOtherSeedOtherPath)
+{
+	auto p = slam::TSlamParams::load(SLAM_INI);
+	p.particles = 3;
+	const auto sweeps = firstSweeps(30);
+	const auto a = run(p, sweeps), b = run(p, sweeps);
+	p.seed = 2;
+	const auto c = run(p, sweeps);
+	bool same = true, other = false;
+	for (size_t i = 0; i < a.size(); i++)
+	{
+		same &= a[i] == b[i];
+		other |= !(a[i] == c[i]);
+	}
+	EXPECT_TRUE(same);
+	EXPECT_TRUE(other);
+}
+
+TEST(RbpfSlam, BestMapIsTheMapBuiltAtItsPath)
+{
+	// The particle's map is what the map makes of the sweeps at the particle's poses: the
+	// property whisker-slam relies on to write the map with whisker-map's writer.
+	auto p = slam::TSlamParams::load(SLAM_INI);
+	p.particles = 3;
+	const auto sweeps = firstSweeps(200);
+	const auto inits = maps::MapConfig::load(p.map_config);
+	slam::RbpfSlam s(p, inits);
+	for (const auto& sw : sweeps) s.step(sw);
+	const auto path = s.bestPath();
+	mrpt::maps::CMultiMetricMap mm(inits);
+	for (size_t i = 0; i < sweeps.size(); i++) mm.insertObservation(*sweeps[i].obs, mrpt::poses::CPose3D(path[i]));
+	const auto rebuilt = mm.mapByClass<maps::CHierarchicalObjectMap>()->mapTables();
+	const auto best = s.bestMap().mapTables();
+	ASSERT_FALSE(best.empty());  // 200 sweeps touch tables
+	ASSERT_EQ(rebuilt.size(), best.size());
+	for (size_t i = 0; i < best.size(); i++)
+	{
+		EXPECT_EQ(rebuilt[i].x, best[i].x);
+		EXPECT_EQ(rebuilt[i].y, best[i].y);
+	}
+}

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# check_slam_bad_input.sh WHISKER_SLAM SRC_DIR WORK_DIR: a missing rawlog, a bad config key,
+# --particles 0, a truth file shorter than the run: one error line, non-zero exit, and the
+# output folder left exactly as it was.
+set -euo pipefail
+slam=$1 src=$2 work=$3
+expect_error="$(dirname "$0")/../apps/expect_error.sh"
+rm -rf "$work"; mkdir -p "$work/out"
+echo "previous result" > "$work/out/estimated_path.txt"
+data="$src/datasets/slam/paper_arena_obs.rawlog"
+"$expect_error" "missing.rawlog: no such file" "$slam" -i "$work/missing.rawlog" -o "$work/out"
+printf '[slam]\nparticles = 10\nparticle = 3\n' > "$work/bad_key.ini"
+"$expect_error" "bad_key.ini: line 3: \[slam\] particle: unknown key" "$slam" -i "$data" -c "$work/bad_key.ini" -o "$work/out"
+printf '[slam]\nparticles = 10\nresampling = best\n' > "$work/bad_method.ini"
+"$expect_error" "bad_method.ini: line 3: \[slam\] resampling: 'best' is not one of" "$slam" -i "$data" -c "$work/bad_method.ini" -o "$work/out"
+printf '[slam]\nparticles = 0\n' > "$work/zero.ini"
+"$expect_error" "zero.ini: line 2: \[slam\] particles" "$slam" -i "$data" -c "$work/zero.ini" -o "$work/out"
+"$expect_error" "--particles 0: the filter needs at least one particle" "$slam" -i "$data" --particles 0 -o "$work/out"
+head -5 "$src/datasets/slam/paper_arena_obs_ground_truth_robot_path.txt" > "$work/short_truth.txt"
+"$expect_error" "short_truth.txt: 3 poses for 882 sweeps" "$slam" -i "$data" --truth "$work/short_truth.txt" -o "$work/out"
+[[ "$(ls -A "$work/out")" == "estimated_path.txt" ]] || { echo "FAIL: output folder changed:"; ls -A "$work/out"; exit 1; }
+[[ "$(cat "$work/out/estimated_path.txt")" == "previous result" ]] || { echo "FAIL: previous result overwritten"; exit 1; }
+echo "ok: bad input changes nothing"

@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# check_whisker_slam.sh WHISKER_SLAM WHISKER_EVAL SRC_DIR WORK_DIR: whisker-slam on a prefix
+# of the shipped default-odometry paper-arena log (datasets/slam/) writes every documented
+# output; its estimated path beats the odometry's ATE (whisker-eval --path) by a stated
+# margin; the same seed gives the same bytes, in either rawlog layout; the map it writes is
+# the best particle's own.
+set -euo pipefail
+slam=$1 eval=$2 src=$3 work=$4
+rm -rf "$work"; mkdir -p "$work"
+data="$src/datasets/slam/paper_arena"
+world="$src/config/worlds/paper_arena.ini"
+# A prefix keeps the test short (about 30 s in Release on a shared core): the first 240
+# sweeps (12 m of the lawnmower, three rows and their turns) with 20 particles.
+sweeps=240 particles=20
+"$slam" -q -i "${data}_obs.rawlog" -o "$work/a" --world "$world" --particles $particles --sweeps $sweeps --seed 7
+for f in estimated_path.txt odometry_path.txt paths.png summary.json map_tables.csv map_candidates.csv \
+         map.png map.3Dscene map.bt map_summary.json metrics.json; do
+  [[ -s "$work/a/$f" ]] || { echo "FAIL: $f missing or empty"; exit 1; }
+done
+[[ -z "$(ls -A "$work/a" | grep staging || true)" ]] || { echo "FAIL: staging folder left"; exit 1; }
+for f in estimated_path.txt odometry_path.txt; do
+  n=$(grep -vc '^%' "$work/a/$f")
+  [[ $n -eq $sweeps ]] || { echo "FAIL: $f has $n poses for $sweeps sweeps"; exit 1; }
+done
+python3 - "$work/a/summary.json" "$particles" "$sweeps" <<'PY' || { echo "FAIL: summary.json"; cat "$work/a/summary.json"; exit 1; }
+import json, sys
+s = json.load(open(sys.argv[1]))  # valid JSON, with every key the doc lists
+assert s["particles"] == int(sys.argv[2]) and s["sweeps"] == int(sys.argv[3]), "particles/sweeps"
+assert set(s["time_per_step_ms"]) == {"mean", "median", "p95", "max"}, "time_per_step_ms"
+assert len(s["ess"]) == s["sweeps"] and all(0 < e <= 1 for e in s["ess"]), "ess"
+assert s["resamplings"] >= 0 and s["map_matches_best_particle"] is True, "resamplings/map_matches_best_particle"
+assert "trajectory" in s["estimated"] and "trajectory" in s["odometry"], "estimated/odometry"
+PY
+# The recorded odometry is the rawlog's, as whisker-sim wrote it (same poses, same columns).
+grep -v '^%' "${data}_obs_odometry_path.txt" | head -$sweeps > "$work/odometry_prefix.txt"
+grep -v '^%' "$work/a/odometry_path.txt" | cmp - "$work/odometry_prefix.txt" || { echo "FAIL: odometry_path.txt differs from the dataset's"; exit 1; }
+
+# ATE against the truth, scored by whisker-eval.
+grep -v '^%' "${data}_obs_ground_truth_robot_path.txt" | head -$sweeps > "$work/truth_prefix.txt"
+ate() { "$eval" --path "$1" --truth "$work/truth_prefix.txt" --json | sed -n 's/.*"ate_rmse_m": \([0-9.]*\).*/\1/p'; }
+est=$(ate "$work/a/estimated_path.txt") odo=$(ate "$work/a/odometry_path.txt")
+echo "ATE RMSE over the first $sweeps sweeps: SLAM $est m, odometry $odo m"
+# Measured 2026-11-28 (this seed, 20 particles, 240 sweeps): SLAM 0.136 m against 0.173 m
+# for the odometry (ratio 0.79). Asserted: at most 0.85 x the odometry's ATE. A guard for
+# this fixed seed, not a claim for every seed: over 400 sweeps seeds 1 and 2 ended worse
+# than the odometry (0.37 and 0.25 m against 0.20 m; doc/slam.md).
+awk -v e="$est" -v o="$odo" 'BEGIN { exit !(e > 0 && o > 0 && e <= 0.85 * o) }' || { echo "FAIL: SLAM ATE $est m is not below 0.85 x odometry $odo m"; exit 1; }
+
+# Same seed, same bytes.
+"$slam" -q -i "${data}_obs.rawlog" -o "$work/b" --world "$world" --particles $particles --sweeps $sweeps --seed 7
+for f in estimated_path.txt map_tables.csv map_candidates.csv; do
+  cmp "$work/a/$f" "$work/b/$f" || { echo "FAIL: $f differs between two runs with the same seed"; exit 1; }
+done
+# The action-sf layout holds the same odometry (as increments: the poses composed from them
+# differ in the last bits, so the particle clouds part after a few hundred steps) and sweeps.
+"$slam" -q -i "${data}_action-sf.rawlog" -o "$work/c" --particles $particles --sweeps $sweeps --seed 7
+cmp "$work/a/odometry_path.txt" "$work/c/odometry_path.txt" || { echo "FAIL: the layouts give different odometry"; exit 1; }
+est_c=$(ate "$work/c/estimated_path.txt")
+echo "action-sf layout: SLAM $est_c m"
+awk -v e="$est_c" -v o="$odo" 'BEGIN { exit !(e > 0 && e <= 0.85 * o) }' || { echo "FAIL: action-sf: SLAM ATE $est_c m is not below 0.85 x odometry $odo m"; exit 1; }
+# Another seed, another particle cloud: the path must differ (the seed is used).
+"$slam" -q -i "${data}_obs.rawlog" -o "$work/d" --particles $particles --sweeps 60 --seed 8
+head -62 "$work/a/estimated_path.txt" > "$work/a_prefix.txt"
+if cmp -s "$work/a_prefix.txt" "$work/d/estimated_path.txt"; then echo "FAIL: --seed 8 gave seed 7's path"; exit 1; fi
+echo "ok: whisker-slam outputs, ATE below the odometry's, reproducible; both layouts"
