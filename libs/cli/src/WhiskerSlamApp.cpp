@@ -126,6 +126,9 @@ int run(Options& o)
 	runner.flush();
 	result.mapTables = map->mapTables();
 	result.mapMatches = sameTables(result.mapTables, slam.bestMap().mapTables());
+	if (!result.mapMatches && !o.quiet)
+		std::fprintf(stderr, "whisker-slam: warning: the map written (rebuilt at the best path) differs from the best "
+							 "particle's own map (summary.json: map_matches_best_particle; doc/slam.md)\n");
 	result.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	const std::string text = outputs.finish(result.wallSeconds);
 	const std::string line = SlamOutputs::write(out, result, settings);
