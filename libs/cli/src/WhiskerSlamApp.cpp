@@ -11,7 +11,9 @@
 #include <whiskermap/core/Error.h>
 #include <whiskermap/maps/MapConfig.h>
 
+#include <algorithm>
 #include <chrono>
+#include <tuple>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -48,9 +50,16 @@ void forgetHistory(mrpt::maps::TSetOfMetricMapInitializers& inits)
 			ours->insertionOptions.keep_history = false;
 }
 
-bool sameTables(const std::vector<world::Table>& a, const std::vector<world::Table>& b)
+/** The same tables, in any order (table ids, hence the order, may differ: the particle's map
+ *  also answered likelihood queries). */
+bool sameTables(std::vector<world::Table> a, std::vector<world::Table> b)
 {
 	if (a.size() != b.size()) return false;
+	const auto byPose = [](const world::Table& p, const world::Table& q) {
+		return std::tie(p.x, p.y, p.yaw) < std::tie(q.x, q.y, q.yaw);
+	};
+	std::sort(a.begin(), a.end(), byPose);
+	std::sort(b.begin(), b.end(), byPose);
 	for (size_t i = 0; i < a.size(); i++)
 		if (a[i].x != b[i].x || a[i].y != b[i].y || a[i].yaw != b[i].yaw) return false;
 	return true;
