@@ -44,7 +44,8 @@ bool OrientedRect::overlaps(const OrientedRect& o) const
 	const core::SinCos self = core::cachedSinCos(theta), other = core::cachedSinCos(o.theta);
 	for (const double a : axes)
 	{
-		const auto [uy, ux] = core::cachedSinCos(a);
+		const core::SinCos u = core::cachedSinCos(a);
+		const double ux = u.cos, uy = u.sin;  // (not a structured binding: lambdas capture it only from C++20)
 		// Projected half-length of a rectangle (yaw t, half-extents h) on axis u.
 		const auto radius = [&](const core::SinCos& t, double hxx, double hyy) {
 			return hxx * std::abs(t.cos * ux + t.sin * uy) + hyy * std::abs(-t.sin * ux + t.cos * uy);
