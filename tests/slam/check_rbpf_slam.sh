@@ -9,7 +9,9 @@ maps=$1 obslib=$2 src=$3 work=$4
 rm -rf "$work"; mkdir -p "$work"
 command -v rbpf-slam >/dev/null || { echo "FAIL: rbpf-slam not installed (Debian package mrpt-apps)"; exit 1; }
 # 120 sweeps = 240 entries (an action and a sensory frame each).
-rawlog-edit -p "$obslib" --cut --to-index 239 -i "$src/datasets/slam/paper_arena_action-sf.rawlog" \
+# In a sanitizer build the sanitizer runtime is preloaded first (scripts/sanitize-tests.sh).
+preload=${WHISKERMAP_TOOL_PRELOAD:+$WHISKERMAP_TOOL_PRELOAD:}
+LD_PRELOAD="${WHISKERMAP_TOOL_PRELOAD:-}" rawlog-edit -p "$obslib" --cut --to-index 239 -i "$src/datasets/slam/paper_arena_action-sf.rawlog" \
   -o "$work/short.rawlog" >/dev/null 2>&1 </dev/null
 # The map sections are config/whisker-map.ini's, renamed, with keep_history off.
 diff <(sed -n '/^\[MappingApplication_/,$p' "$src/config/rbpf-slam.ini") \
@@ -18,8 +20,9 @@ diff <(sed -n '/^\[MappingApplication_/,$p' "$src/config/rbpf-slam.ini") \
 grep -q '^keep_history = false' "$src/config/rbpf-slam.ini" || { echo "FAIL: keep_history not off"; exit 1; }
 cd "$work"
 sed 's/^sampleSize=30$/sampleSize=8/' "$src/config/rbpf-slam.ini" > rbpf-slam-8.ini
-LD_PRELOAD="$maps" timeout 300 rbpf-slam rbpf-slam-8.ini short.rawlog </dev/null >rbpf.log 2>&1 ||
-  { echo "FAIL: rbpf-slam exited $?"; tail -20 rbpf.log; exit 1; }
+code=0
+LD_PRELOAD="$preload$maps" timeout "${WHISKERMAP_TOOL_TIMEOUT:-300}" rbpf-slam rbpf-slam-8.ini short.rawlog </dev/null >rbpf.log 2>&1 || code=$?
+[[ $code -eq 0 ]] || { echo "FAIL: rbpf-slam exited $code"; tail -20 rbpf.log; exit 1; }
 grep -q "whiskermap::maps::CHierarchicalObjectMap" rbpf.log || { echo "FAIL: no hierarchicalObjectMap in the particles"; tail -40 rbpf.log; exit 1; }
 out=rbpf-slam-out
 path="$out/log_estimated_path.txt"
