@@ -199,15 +199,22 @@ TEST(CHierarchicalObjectMap, LikelihoodPeaksAtTheTruePoses)
 			}
 }
 
-TEST(CHierarchicalObjectMap, SerializationRoundTripThroughCMultiMetricMap)
+/** `map` written with MRPT's serialization and read back. */
+static mrpt::maps::CMultiMetricMap roundTrip(const mrpt::maps::CMultiMetricMap& map)
 {
-	const auto& m = defaultMapped();
 	mrpt::io::CMemoryStream buf;
 	auto arch = mrpt::serialization::archiveFrom(buf);
-	arch << m.multimap;
+	arch << map;
 	buf.Seek(0);
 	mrpt::maps::CMultiMetricMap back;
 	arch >> back;
+	return back;
+}
+
+TEST(CHierarchicalObjectMap, SerializationRoundTripThroughCMultiMetricMap)
+{
+	const auto& m = defaultMapped();
+	const mrpt::maps::CMultiMetricMap back = roundTrip(m.multimap);
 	auto b = back.mapByClass<CHierarchicalObjectMap>();
 	ASSERT_TRUE(b);
 	EXPECT_TRUE(b->lasting());
@@ -227,12 +234,7 @@ TEST(CHierarchicalObjectMap, SerializationRoundTripThroughCMultiMetricMap)
 TEST(CHierarchicalObjectMap, PerPoseSerializationRoundTrip)
 {
 	const auto& m = perPoseMapped();
-	mrpt::io::CMemoryStream buf;
-	auto arch = mrpt::serialization::archiveFrom(buf);
-	arch << m.multimap;
-	buf.Seek(0);
-	mrpt::maps::CMultiMetricMap back;
-	arch >> back;
+	const mrpt::maps::CMultiMetricMap back = roundTrip(m.multimap);
 	auto b = back.mapByClass<CHierarchicalObjectMap>();
 	ASSERT_TRUE(b);
 	EXPECT_FALSE(b->lasting());

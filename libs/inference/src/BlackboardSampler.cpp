@@ -360,19 +360,12 @@ bool BlackboardSampler::proposeMerge(Id l, Id other, double beta)
 	return false;
 }
 
-// Greedy compass search on (x, y, yaw) of leg l, on its exact local log-odds (eq. 20: the
-// board without l does not depend on its pose), from a quarter leg width down to 0.1 mm.
+// Greedy compass search on (x, y, yaw) of leg l (PoseFit's searchLegPose), counted as a refit.
 void BlackboardSampler::searchLegPose(Id l)
 {
-	Leg best = m_bb.leg(l);
-	const double start = model::logOddsLeg(m_bb, l);
-	const double value = compassSearch(best, m_model.leg_width, start, 1e-9, [&](const Leg& c) {
-		m_bb.setLeg(l, c);
-		return model::logOddsLeg(m_bb, l);
-	});
-	m_bb.setLeg(l, best);
+	const double gain = inference::searchLegPose(m_bb, l, 1e-9);
 	m_result->proposed[static_cast<size_t>(Move::Refit)]++;
-	m_result->accepted[static_cast<size_t>(Move::Refit)] += value > start;
+	m_result->accepted[static_cast<size_t>(Move::Refit)] += gain > 0;
 }
 
 // Q(ch(T) | T): the missing leg at a uniformly chosen empty corner, exactly as eq. 6 expects.

@@ -602,17 +602,7 @@ class Search
 	 *  poses do not see. Returns the board's logJoint after it. */
 	double polishLegs(double lp)
 	{
-		for (model::Id l = 0; l < m_bb.legIdBound(); l++)
-		{
-			Leg leg = m_bb.leg(l);
-			const double start = model::logOddsLeg(m_bb, l);
-			const double best = compassSearch(leg, m_p.leg_width, start, 1e-12, [&](const Leg& c) {
-				m_bb.setLeg(l, c);
-				return model::logOddsLeg(m_bb, l);
-			});
-			m_bb.setLeg(l, leg);
-			lp += best - start;
-		}
+		for (model::Id l = 0; l < m_bb.legIdBound(); l++) lp += searchLegPose(m_bb, l, 1e-12);
 		return lp;
 	}
 

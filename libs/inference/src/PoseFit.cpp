@@ -2,6 +2,7 @@
 #include <whiskermap/core/MathCache.h>
 #include <whiskermap/inference/PoseFit.h>
 #include <whiskermap/model/Densities.h>
+#include <whiskermap/model/Posterior.h>
 
 #include <algorithm>
 #include <cmath>
@@ -123,5 +124,17 @@ model::Table fitTable(
 	t.x = mqx - (c * mox - sn * moy);
 	t.y = mqy - (sn * mox + c * moy);
 	return t;
+}
+
+double searchLegPose(model::Blackboard& bb, model::Id l, double tolerance)
+{
+	model::Leg best = bb.leg(l);
+	const double start = model::logOddsLeg(bb, l);
+	const double value = compassSearch(best, bb.params().leg_width, start, tolerance, [&](const model::Leg& c) {
+		bb.setLeg(l, c);
+		return model::logOddsLeg(bb, l);
+	});
+	bb.setLeg(l, best);
+	return value - start;
 }
 }  // namespace whiskermap::inference

@@ -45,6 +45,9 @@ double TableExistence::of(const model::Blackboard& bb, Id t)
 	// board without t and then taken off it again.
 	double rivals = 0;  // sum of exp(s_R - s_T)
 	m_scored.assign(1, bb.table(t));
+	const auto scored = [&](const Table& r) {
+		return std::any_of(m_scored.begin(), m_scored.end(), [&](const Table& s) { return same(s, r, p); });
+	};
 	for (const Id l : bb.legsOf(t))
 	{
 		if (!bb.explains(l)) continue;
@@ -57,13 +60,12 @@ double TableExistence::of(const model::Blackboard& bb, Id t)
 			if (bound(p, adoptable(m_without, r, l, m_adopted) + 1) < sT - 20) continue;
 			// Pair tables fitted to two legs settle within millimetres: one already scored
 			// (or t itself) is not scored again (each pair of legs proposes its tables twice).
-			if (std::any_of(m_scored.begin(), m_scored.end(), [&](const Table& s) { return same(s, r, p); })) continue;
+			if (scored(r)) continue;
 			// The rival as it settles on the legs it adopts; counted once, and never when it
 			// settles on t itself.
 			Table settled = r;
 			const double sR = scoreRival(m_without, settled, l);
-			if (std::any_of(m_scored.begin(), m_scored.end(), [&](const Table& s) { return same(s, settled, p); }))
-				continue;
+			if (scored(settled)) continue;
 			m_scored.push_back(settled);
 			rivals += std::exp(std::min(sR - sT, 700.0));
 		}

@@ -1,4 +1,5 @@
 #pragma once
+#include <whiskermap/model/Blackboard.h>
 #include <whiskermap/model/Leg.h>
 #include <whiskermap/model/LegEvidence.h>
 #include <whiskermap/model/ModelParams.h>
@@ -56,4 +57,9 @@ double compassSearch(model::Leg& leg, double legWidth, double value, double tole
 		}
 	return value;
 }
+
+/** compassSearch of leg `l`'s pose on its exact local log-odds (eq. 20: the rest of the board
+ *  does not depend on its pose); the best pose is left on the board. Returns the gain (>= 0).
+ *  Used by the sampler's polish and the exact oracle's rebuilt boards. */
+double searchLegPose(model::Blackboard& bb, model::Id l, double tolerance);
 }  // namespace whiskermap::inference
