@@ -13,6 +13,10 @@ struct EvalOptions
 	/** ... and their yaws differ by at most this, modulo 180 degrees (a table is the same
 	 *  table turned half a turn). */
 	double gate_yaw_deg = 20;
+	/** Walls (issue 11): a point of one wall's centre line is covered by another wall whose
+	 *  centre line passes within this distance (metres), directions within gate_yaw_deg:
+	 *  half a wall's 0.1 m thickness plus 0.1 m of error. */
+	double wall_gate = 0.15;
 	/** OSPA cut-off c (metres): the cost of a missing or extra table. */
 	double ospa_c = 0.5;
 	/** OSPA order p (>= 1); 1 makes OSPA a mean per-table error. */
