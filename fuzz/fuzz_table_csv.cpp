@@ -1,5 +1,5 @@
-// Fuzz target: the table CSV readers (map_tables.csv and per_pose_tables.csv); the first
-// byte chooses which, the rest is the file.
+// Fuzz target: the table CSV readers (map_tables.csv, per_pose_tables.csv, map_walls.csv);
+// the first byte chooses which (odd: map; else bit 1: walls, or per-pose), the rest is the file.
 #include <whiskermap/core/Error.h>
 #include <whiskermap/eval/TableCsv.h>
 
@@ -14,6 +14,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 		const auto& path = fuzzFile(data + 1, size - 1, ".csv");
 		if (data[0] & 1)
 			TableCsv::tables(TableCsv::readMap(path));
+		else if (data[0] & 2)
+			TableCsv::readWalls(path);
 		else
 		{
 			TableCsv::PerPoseReader r(path, 1u << 30);

@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # check_sim_outputs.sh SIM SRC_DIR WORK_DIR: whisker-sim regenerates the shipped datasets
-# (datasets/paper_arena, datasets/slam) bit-for-bit, is deterministic, and leaves nothing
+# (datasets/paper_arena, datasets/office, datasets/slam) bit-for-bit, is deterministic, and leaves nothing
 # behind when it fails.
 set -euo pipefail
 sim=$1 src=$2 work=$3
 rm -rf "$work"; mkdir -p "$work"
 "$src/scripts/make-datasets.sh" "$(dirname "$(dirname "$(dirname "$sim")")")" "$work" >/dev/null
-for dir in paper_arena slam; do
+for dir in paper_arena office slam; do
   n=0
   for f in "$src/datasets/$dir"/*; do
     cmp "$f" "$work/$dir/$(basename "$f")" || { echo "FAIL: $dir/$(basename "$f") differs from the shipped file"; exit 1; }

@@ -1,4 +1,5 @@
-// Tests on the shipped, recorded datasets (datasets/paper_arena/, datasets/slam/) and the
+// Tests on the shipped, recorded datasets (datasets/paper_arena/, datasets/office/,
+// datasets/slam/) and the
 // paper arena.
 #include <gtest/gtest.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
@@ -13,6 +14,7 @@
 #include <whiskermap/world/WhiskerSimulator.h>
 
 #include <cmath>
+#include <set>
 
 using namespace whiskermap;
 
@@ -48,6 +50,42 @@ TEST(PaperArenaDatasets, NoiseLevelsAreTheNamedPresets)
 	EXPECT_EQ(sigmaR("noiseless"), 0.0);
 	EXPECT_EQ(sigmaR("default"), 0.01);
 	EXPECT_EQ(sigmaR("very-noisy"), 0.05);  // the paper's 0.5 units at 0.1 m per unit
+}
+
+TEST(OfficeDatasets, EachLoadsAndTouchesTheInteriorWallsAndEveryObject)
+{
+	// datasets/office/: office.ini's 12 x 12 grid (4 headings), blocked poses skipped.
+	const auto w = world::World::load(SRC + "/config/worlds/office.ini");
+	ASSERT_EQ(w.walls.size(), 2u);
+	ASSERT_GE(w.tables.size(), 10u);
+	world::WhiskerSimulator sim(w, world::Robot::load(SRC + "/config/robots/scratchbot.ini"), {}, 1);
+	std::vector<mrpt::poses::CPose2D> free;
+	for (const auto& p : world::Trajectory::paperGrid(w, 12))
+		if (sim.poseIsFree(p)) free.push_back(p);
+	for (const char* preset : {"noiseless", "default", "very-noisy"})
+	{
+		const auto c = obs::RawlogReader::read(SRC + "/datasets/office/" + preset + ".rawlog");
+		ASSERT_EQ(c.sweeps.size(), free.size()) << preset;
+		for (size_t i = 0; i < free.size(); i++) EXPECT_NEAR((c.sweeps[i].robotPose - free[i]).norm(), 0, 1e-12);
+	}
+	// The path covers the office: every object touched on >= 2 legs, both partitions touched
+	// (a contact on an interior wall's face: on its slab, not on the arena's walls).
+	const auto truthWorld = world::World::load(SRC + "/datasets/office/default_ground_truth_world.ini");
+	EXPECT_EQ(truthWorld.walls.size(), 2u);
+	std::vector<std::set<int>> legs(w.tables.size());
+	std::vector<size_t> onWall(w.walls.size(), 0);
+	std::vector<world::WhiskerSimulator::Truth> truth;
+	for (const auto& p : free)
+	{
+		const auto o = sim.sense(p, mrpt::Clock::fromDouble(1e9), &truth);
+		for (const auto& s : o->toShapelets(p))
+		{
+			if (truth[s.whisker].table >= 0) legs[truth[s.whisker].table].insert(truth[s.whisker].leg);
+			for (size_t k = 0; k < w.walls.size(); k++) onWall[k] += w.walls[k].slab().distance({s.x, s.y}) < 1e-9;
+		}
+	}
+	for (size_t i = 0; i < legs.size(); i++) EXPECT_GE(legs[i].size(), 2u) << "object " << i;
+	for (size_t k = 0; k < onWall.size(); k++) EXPECT_GT(onWall[k], 20u) << "wall " << k;
 }
 
 TEST(PaperArena, ReproducesThePapersContactStatistic)

@@ -76,6 +76,22 @@ TEST(TrajectoryGenerator, EveryKindIsFreeAndContinuousInBothWorlds)
 		}
 }
 
+TEST(TrajectoryGenerator, EveryKindDrivesRoundTheOfficesInteriorWalls)
+{
+	// Issue 11: interior walls are obstacles of the planner; steps of at most speed / rate
+	// (5 cm) with the body 1 cm clear of every wall never cross a 10 cm wall.
+	const auto w = world::World::load(SRC + "/config/worlds/office.ini");
+	ASSERT_EQ(w.walls.size(), 2u);
+	for (Kind k : {Kind::Lawnmower, Kind::Explore, Kind::WallFollow, Kind::Loop})
+	{
+		const auto s = spec(k);
+		const auto poses = world::TrajectoryGenerator::generate(w, robot(), s, 1);
+		ASSERT_GT(poses.size(), 100u);
+		expectContinuousAndFree(w, poses, s, "office kind " + std::to_string(int(k)));
+	}
+	EXPECT_GT(coverage(w, world::TrajectoryGenerator::generate(w, robot(), spec(Kind::Lawnmower), 1)), 0.9);
+}
+
 TEST(TrajectoryGenerator, LegsOnALawnmowerRowAreDrivenRound)
 {
 	// In random_yaw/seed1 some rows run straight through legs: the planner must leave them.

@@ -16,7 +16,7 @@ namespace
 {
 struct Options
 {
-	std::string world, map, perPose, rawlog, path, truth;
+	std::string world, map, walls, perPose, rawlog, path, truth;
 	size_t poses = 0;
 	bool json = false;
 	eval::EvalOptions eval;
@@ -30,6 +30,7 @@ int run(const Options& o)
 	if (o.map.empty() && !(o.world.empty() && o.perPose.empty() && o.rawlog.empty() && o.poses == 0))
 		throw core::Error("--world, --per-pose, --rawlog and --poses score a map: give --map too");
 	if (!o.map.empty() && o.world.empty()) throw core::Error("--map needs --world (the true tables)");
+	if (!o.walls.empty() && o.map.empty()) throw core::Error("--walls scores a map's walls: give --map and --world too");
 	eval::EvalReport report;
 	report.options = o.eval;
 	if (!o.path.empty())
@@ -41,8 +42,16 @@ int run(const Options& o)
 		return 0;
 	}
 	const auto w = world::World::load(o.world);
-	const auto estimated = eval::TableCsv::tables(eval::TableCsv::readMap(o.map));
-	report.map = eval::MapEvaluation::compute(w.tables, estimated, o.eval);
+	bool hasClass = false;
+	const auto estimated = eval::TableCsv::tables(eval::TableCsv::readMap(o.map, &hasClass));
+	report.map = eval::MapEvaluation::compute(w.tables, estimated, o.eval, hasClass);
+	if (!o.walls.empty())
+	{
+		std::vector<world::Wall> walls;
+		for (const auto& r : eval::TableCsv::readWalls(o.walls)) walls.push_back(r.wall);
+		report.walls = eval::WallEvaluation::compute(
+			eval::WallEvaluation::trueWalls(w), walls, o.eval.wall_gate, o.eval.gate_yaw_deg);
+	}
 
 	// One streamed pass over the rawlog and the per-pose tables: memory bounded by the
 	// world and the map, not the log.
@@ -96,7 +105,14 @@ int WhiskerEvalApp::main(int argc, char** argv)
 	app.add_option(
 		"-m,--map", o.map,
 		"Consolidated map CSV written by whisker-map (map_tables.csv: id,x,y,yaw_deg,length,"
-		"width,leg_width,texture,existence,contacts,legs): scored as written; optional with --path");
+		"width,leg_width,texture,existence,contacts,legs[,class]): scored as written; optional with "
+		"--path. Objects match only within their class (no class column: all are tables); with "
+		"a class column it also reports class accuracy and dimension errors");
+	app.add_option(
+		"--walls", o.walls,
+		"Estimated walls CSV (map_walls.csv: x0,y0,x1,y1,thickness,existence), scored as written "
+		"against the world's interior walls and arena edges: length recall and precision "
+		"(see --wall-gate); needs --map");
 	app.add_option(
 		"--per-pose", o.perPose,
 		"Per-pose MAP tables CSV (per_pose_tables.csv: pose,x,y,yaw_deg,length,width,"
@@ -125,13 +141,20 @@ int WhiskerEvalApp::main(int argc, char** argv)
 	app.add_flag("--json", o.json, "Print one JSON object (fixed key order and format) instead of a table");
 	app.add_option(
 		   "--gate-distance", o.eval.gate_distance,
-		   "Largest centre distance (m) of a matched pair; a quarter of the paper table's 1 m length")
+		   "Largest centre distance (m) of a matched pair for the paper's 1.0 x 0.6 m table (a "
+		   "quarter of its length); scaled by each true object's leg-centre diagonal over the table's")
 		->check(CLI::PositiveNumber)
 		->capture_default_str();
 	app.add_option(
 		   "--gate-yaw-deg", o.eval.gate_yaw_deg,
-		   "Largest yaw difference (degrees, modulo 180) of a matched pair, in (0, 90]")
+		   "Largest yaw difference (degrees, modulo 180; modulo 90 for a square true object) of a matched pair, in (0, 90]")
 		->check(CLI::Range(0.0, 90.0))
+		->capture_default_str();
+	app.add_option(
+		   "--wall-gate", o.eval.wall_gate,
+		   "Walls: a point of one wall's centre line counts as covered by another wall whose centre "
+		   "line passes within this distance (m) and whose direction is within --gate-yaw-deg")
+		->check(CLI::PositiveNumber)
 		->capture_default_str();
 	app.add_option("--ospa-c", o.eval.ospa_c, "OSPA cut-off c (m): the cost of a missing or extra table")
 		->check(CLI::PositiveNumber)

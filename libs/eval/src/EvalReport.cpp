@@ -79,6 +79,29 @@ Fields trajectoryFields(const TrajectoryEvaluation& t, const EvalOptions& o)
 	};
 }
 
+/** Class accuracy and dimension errors (maps whose objects carry a class). */
+Fields classFields(const ClassFigures& c)
+{
+	return {
+		{"matched_any_class", std::to_string(c.matched_any_class)},
+		{"class_accuracy", num(c.class_accuracy, 6)},
+		{"length_err_m", num(c.length_err_m, 6)},
+		{"width_err_m", num(c.width_err_m, 6)},
+		{"leg_width_err_m", num(c.leg_width_err_m, 6)},
+	};
+}
+
+Fields wallFields(const WallEvaluation& w)
+{
+	return {
+		{"gate_m", num(w.gate_m, 6)},
+		{"true_length_m", num(w.true_length_m, 6)},
+		{"estimated_length_m", num(w.estimated_length_m, 6)},
+		{"recall", num(w.recall, 6)},
+		{"precision", num(w.precision, 6)},
+	};
+}
+
 std::string trajectoryText(const TrajectoryEvaluation& t, const EvalOptions& o)
 {
 	char buf[512];
@@ -110,6 +133,8 @@ std::string EvalReport::toJson() const
 		top.emplace_back("estimated", std::to_string(map->estimated));
 		top.emplace_back("truth", std::to_string(map->truth));
 		top.emplace_back("matched", std::to_string(map->matched));
+		if (map->classes)
+			for (auto& f : classFields(*map->classes)) top.push_back(std::move(f));
 	}
 	if (map && identifiability)
 	{
@@ -123,6 +148,7 @@ std::string EvalReport::toJson() const
 		if (perPose->local) pp.emplace_back("local", object(figureFields(*perPose->local, 6), 4));
 		top.emplace_back("per_pose", object(pp, 2));
 	}
+	if (walls) top.emplace_back("walls", object(wallFields(*walls), 2));
 	if (trajectory) top.emplace_back("trajectory", object(trajectoryFields(*trajectory, options), 2));
 	return object(top, 0) + "\n";
 }
@@ -130,6 +156,14 @@ std::string EvalReport::toJson() const
 std::string EvalReport::toText() const
 {
 	std::string s = map ? mapText() : "";
+	if (walls)
+	{
+		char buf[256];
+		std::snprintf(
+			buf, sizeof(buf), "walls (gate %.3g m): %.3f m true, %.3f m estimated; length recall %.3f, precision %.3f\n",
+			walls->gate_m, walls->true_length_m, walls->estimated_length_m, walls->recall, walls->precision);
+		s += buf;
+	}
 	if (trajectory) s += trajectoryText(*trajectory, options);
 	return s;
 }
@@ -184,6 +218,16 @@ std::string EvalReport::mapText() const
 			buf, sizeof(buf),
 			"identifiable tables (touched on >= 2 legs, gate %.3f m): %zu; recall on them %.3f\n",
 			identifiability->gate, identifiability->tables.size(), identifiability->recall(*map));
+		s += buf;
+	}
+	if (map->classes)
+	{
+		const auto& c = *map->classes;
+		std::snprintf(
+			buf, sizeof(buf),
+			"classes: %zu matched ignoring the class, class accuracy %s; dimension errors (m): length %s, width %s, leg %s\n",
+			c.matched_any_class, num(c.class_accuracy, 3, "n/a").c_str(), num(c.length_err_m, 4, "n/a").c_str(),
+			num(c.width_err_m, 4, "n/a").c_str(), num(c.leg_width_err_m, 4, "n/a").c_str());
 		s += buf;
 	}
 	return s;

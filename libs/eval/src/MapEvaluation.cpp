@@ -1,7 +1,10 @@
 #include <whiskermap/core/Angles.h>
-#include <whiskermap/eval/SparseAssignment.h>
 #include <whiskermap/eval/MapEvaluation.h>
 #include <whiskermap/eval/Ospa.h>
+#include <whiskermap/eval/SparseAssignment.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace whiskermap::eval
 {
@@ -13,42 +16,93 @@ std::vector<Eigen::Vector2d> centres(const std::vector<world::Table>& tables)
 	for (const auto& t : tables) c.emplace_back(t.x, t.y);
 	return c;
 }
+
+/** The gated candidate pairs (row: true, column: estimated) and their yaw errors, degrees. */
+struct Candidates
+{
+	std::vector<SparseAssignment::Pair> pairs;
+	std::vector<double> yawErr;
+};
+
+Candidates candidates(
+	const std::vector<world::Table>& truth, const std::vector<world::Table>& estimated, const EvalOptions& opts,
+	bool sameClass)
+{
+	double widest = opts.gate_distance;  // the grid search radius: the widest per-object gate
+	for (const auto& t : truth) widest = std::max(widest, MapEvaluation::gateFor(t, opts));
+	Candidates c;
+	for (const auto& p : SparseAssignment::near(centres(truth), centres(estimated), widest))
+	{
+		const auto& t = truth[p.row];
+		const auto& e = estimated[p.col];
+		if (p.cost > MapEvaluation::gateFor(t, opts)) continue;
+		if (sameClass && e.object_class != t.object_class) continue;
+		const double period = t.length == t.width ? M_PI / 2 : M_PI;  // a square's symmetry
+		const double yaw = core::rad2deg(std::abs(core::angleDiff(e.yaw, t.yaw, period)));
+		if (yaw > opts.gate_yaw_deg) continue;
+		c.pairs.push_back(p);
+		c.yawErr.push_back(yaw);
+	}
+	return c;
+}
+
+ClassFigures classFigures(
+	const std::vector<world::Table>& truth, const std::vector<world::Table>& estimated, const EvalOptions& opts,
+	const std::vector<int>& truthMatch)
+{
+	ClassFigures f;
+	const auto blind = candidates(truth, estimated, opts, false);
+	const auto match = SparseAssignment::solve(int(truth.size()), int(estimated.size()), blind.pairs, INFINITY);
+	size_t agree = 0;
+	for (size_t i = 0; i < truth.size(); i++)
+		if (match[i] >= 0) f.matched_any_class++, agree += estimated[match[i]].object_class == truth[i].object_class;
+	if (f.matched_any_class > 0) f.class_accuracy = double(agree) / f.matched_any_class;
+	double dl = 0, dw = 0, dlw = 0;
+	size_t n = 0;
+	for (size_t i = 0; i < truth.size(); i++)
+	{
+		if (truthMatch[i] < 0) continue;
+		const auto &t = truth[i], &e = estimated[truthMatch[i]];
+		dl += std::abs(e.length - t.length), dw += std::abs(e.width - t.width);
+		dlw += std::abs(e.leg_width - t.leg_width), n++;
+	}
+	if (n > 0) f.length_err_m = dl / n, f.width_err_m = dw / n, f.leg_width_err_m = dlw / n;
+	return f;
+}
 }  // namespace
+
+double MapEvaluation::gateFor(const world::Table& truth, const EvalOptions& opts)
+{
+	// Exactly the option for the paper table (a hypot folded at compile time may differ from
+	// the library's by an ulp: older scores must not move).
+	if (truth.length == 1.0 && truth.width == 0.6) return opts.gate_distance;
+	return opts.gate_distance * std::hypot(truth.length, truth.width) / std::hypot(1.0, 0.6);
+}
 
 MapEvaluation MapEvaluation::compute(
 	const std::vector<world::Table>& truth, const std::vector<world::Table>& estimated,
-	const EvalOptions& opts)
+	const EvalOptions& opts, bool estimateHasClasses)
 {
 	opts.validate();
-	const auto est = centres(estimated), tru = centres(truth);
-	// Rows: true tables, columns: estimated ones; only pairs within the centre gate are
-	// scored (a grid finds them), and the assignment is solved per connected component.
-	// Yaw error modulo 180 degrees (symmetry).
-	std::vector<SparseAssignment::Pair> pairs;
-	std::vector<double> yawErr;
-	for (const auto& p : SparseAssignment::near(tru, est, opts.gate_distance))
-	{
-		const double yaw = core::rad2deg(std::abs(core::angleDiff(estimated[p.col].yaw, truth[p.row].yaw, M_PI)));
-		if (yaw > opts.gate_yaw_deg) continue;
-		pairs.push_back(p);
-		yawErr.push_back(yaw);
-	}
-
+	// Rows: true tables, columns: estimated ones; only pairs within the gates are scored (a
+	// grid finds them), and the assignment is solved per connected component.
+	const auto c = candidates(truth, estimated, opts, true);
 	MapEvaluation e;
 	e.estimated = estimated.size();
 	e.truth = truth.size();
-	e.truthMatch = SparseAssignment::solve(static_cast<int>(truth.size()), static_cast<int>(estimated.size()), pairs, INFINITY);
+	e.truthMatch = SparseAssignment::solve(static_cast<int>(truth.size()), static_cast<int>(estimated.size()), c.pairs, INFINITY);
 	double sumSq = 0, sumYaw = 0;
-	for (size_t k = 0; k < pairs.size(); k++)
+	for (size_t k = 0; k < c.pairs.size(); k++)
 	{
-		if (e.truthMatch[pairs[k].row] != pairs[k].col) continue;
+		if (e.truthMatch[c.pairs[k].row] != c.pairs[k].col) continue;
 		e.matched++;
-		sumSq += pairs[k].cost * pairs[k].cost;
-		sumYaw += yawErr[k];
+		sumSq += c.pairs[k].cost * c.pairs[k].cost;
+		sumYaw += c.yawErr[k];
 	}
 	e.figures = Figures::of(
 		e.estimated, e.truth, e.matched, sumSq, sumYaw,
-		Ospa::distance(est, tru, opts.ospa_c, opts.ospa_p));
+		Ospa::distance(centres(estimated), centres(truth), opts.ospa_c, opts.ospa_p));
+	if (estimateHasClasses) e.classes = classFigures(truth, estimated, opts, e.truthMatch);
 	return e;
 }
 }  // namespace whiskermap::eval

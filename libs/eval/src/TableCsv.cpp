@@ -39,6 +39,9 @@ class Row
 
 	[[noreturn]] void fail(const std::string& problem) const { throw core::Error(m_where + problem); }
 
+	const std::string& text(size_t col) const { return m_fields[col]; }
+	size_t size() const { return m_fields.size(); }
+
 	double number(size_t col, double lo, double hi) const
 	{
 		const std::string& s = m_fields[col];
@@ -90,14 +93,17 @@ class Row
 class CsvReader
 {
    public:
-	CsvReader(const std::string& path, std::string header)
-		: m_in(path, "file"), m_path(path), m_header(std::move(header)), m_names(split(m_header))
+	/** `alternative`, when given, is a second header the file may have instead. */
+	CsvReader(const std::string& path, std::string header, const std::string& alternative = "")
+		: m_in(path, "file"), m_path(path), m_header(std::move(header))
 	{
 		std::string line;
 		if (!m_in.next(line)) throw core::Error(path + ": empty file (expected the header '" + m_header + "')");
-		if (line != m_header)
+		if (line != m_header && (alternative.empty() || line != alternative))
 			throw core::Error(m_in.where() + "bad header '" + line + "' (expected '" + m_header + "')");
+		m_names = split(line);
 	}
+	const std::vector<std::string>& names() const { return m_names; }
 	/** The next data row (its column count checked); empty optional at the end. */
 	std::optional<Row> next()
 	{
@@ -116,26 +122,57 @@ class CsvReader
 	std::vector<std::string> m_names;
 };
 
-void readCsv(const std::string& path, const std::string& header, const std::function<void(const Row&)>& onRow)
+/** Calls onRow on every row; returns the column names of the header found. */
+std::vector<std::string> readCsv(
+	const std::string& path, const std::string& header, const std::function<void(const Row&)>& onRow,
+	const std::string& alternative = "")
 {
-	CsvReader in(path, header);
+	CsvReader in(path, header, alternative);
 	while (const auto row = in.next()) onRow(*row);
+	return in.names();
 }
+
+
 }  // namespace
 
-std::vector<TableCsv::MapRow> TableCsv::readMap(const std::string& path)
+std::vector<TableCsv::MapRow> TableCsv::readMap(const std::string& path, bool* hasClass)
 {
 	std::vector<MapRow> rows;
 	std::set<long> ids;
-	readCsv(path, MAP_HEADER, [&](const Row& r) {
+	const auto names = readCsv(path, MAP_HEADER, [&](const Row& r) {
 		MapRow m;
 		m.id = r.integer(0, 1e9);
 		m.table = r.table();
+		if (r.size() > 11)
+		{
+			if (!world::ObjectClass::valid(r.text(11)))
+				r.fail("column 'class': '" + r.text(11) + "' is not a class name (1 to 31 letters, digits or _)");
+			m.table.object_class = world::ObjectClass(r.text(11));
+		}
 		m.existence = r.number(8, 0, 1);
 		m.contacts = static_cast<uint64_t>(r.integer(9, 1e15));
 		m.legs = static_cast<uint32_t>(r.integer(10, 4));
 		if (!ids.insert(m.id).second) r.fail("duplicate id " + std::to_string(m.id));
 		rows.push_back(m);
+	}, MAP_HEADER_CLASS);
+	if (hasClass) *hasClass = names.size() > 11;
+	return rows;
+}
+
+std::vector<TableCsv::WallRow> TableCsv::readWalls(const std::string& path)
+{
+	std::vector<WallRow> rows;
+	readCsv(path, WALLS_HEADER, [&](const Row& r) {
+		const double big = 1e4;
+		WallRow w;
+		w.wall.x0 = r.number(0, -big, big);
+		w.wall.y0 = r.number(1, -big, big);
+		w.wall.x1 = r.number(2, -big, big);
+		w.wall.y1 = r.number(3, -big, big);
+		w.wall.thickness = r.number(4, 0, big);
+		w.existence = r.number(5, 0, 1);
+		if (w.wall.length() <= 0) r.fail("wall of zero length");
+		rows.push_back(w);
 	});
 	return rows;
 }

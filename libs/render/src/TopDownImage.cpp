@@ -37,6 +37,7 @@ void TopDownImage::arena(const world::World& w, mrpt::img::TColor c)
 	quad({Eigen::Vector2d(w.x_min, w.y_min), Eigen::Vector2d(w.x_max, w.y_min),
 		  Eigen::Vector2d(w.x_max, w.y_max), Eigen::Vector2d(w.x_min, w.y_max)},
 		 c, 3);
+	for (const auto& v : w.walls) quad(v.slab().corners, c, 2);  // interior walls: their slabs
 }
 
 void TopDownImage::table(const world::Table& t, mrpt::img::TColor c, unsigned width)

@@ -3,11 +3,12 @@
 #include <whiskermap/core/IniSection.h>
 #include <whiskermap/world/World.h>
 
+#include "WorldSections.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <map>
 #include <sstream>
 
 namespace whiskermap::world
@@ -18,7 +19,11 @@ World World::load(const std::string& path)
 {
 	const auto file = core::openIniFile(path, "world file");
 	const auto& cfg = *file;
-	core::rejectUnknownSections(cfg, {"arena"}, "table_", path);
+	std::vector<std::string> sections;  // [arena], [table_N] and [wall_N] only
+	cfg.getAllSections(sections);
+	for (const auto& s : sections)
+		if (!s.empty() && s != "arena" && s.rfind("table_", 0) != 0 && s.rfind("wall_", 0) != 0)
+			throw Error(core::iniWhere(cfg, s, "", path) + "[" + s + "]: unknown section");
 
 	World w;
 	core::IniSection arena(cfg, "arena", path);
@@ -33,57 +38,8 @@ World World::load(const std::string& path)
 	if (w.x_max <= w.x_min) arena.fail("x_max", "must be greater than x_min");
 	if (w.y_max <= w.y_min) arena.fail("y_max", "must be greater than y_min");
 
-	// [table_N] sections, in order of N.
-	std::map<long, std::string> byIndex;
-	for (const auto& s : cfg.sectionsInOrder())
-	{
-		if (s.rfind("table_", 0) != 0) continue;
-		const long n = core::sectionIndex(s, "table_", MAX_TABLES);
-		if (n < 0)
-			throw Error(core::iniWhere(cfg, s) + "[" + s + "]: table sections must be named table_N, N = 0, 1, ... " +
-						"(no leading zeros, N < " + std::to_string(MAX_TABLES) + ")");
-		byIndex[n] = s;
-	}
-	std::vector<std::string> names;
-	struct Box
-	{
-		double x0, x1, y0, y1;
-	};
-	std::vector<Obstacle> feet;
-	std::vector<Box> boxes;
-	for (const auto& [index, name] : byIndex)
-	{
-		core::IniSection sec(cfg, name, path);
-		Table t;
-		t.x = sec.number("x", -big, big);
-		t.y = sec.number("y", -big, big);
-		t.yaw = core::deg2rad(sec.number("yaw_deg", -360, 360));
-		t.length = sec.number("length", 1e-3, 100);
-		t.width = sec.number("width", 1e-3, 100);
-		t.leg_width = sec.number("leg_width", 1e-3, 10);
-		t.texture = sec.number("texture", 0, 1);
-		sec.finish();
-		if (t.texture <= 0 || t.texture >= 1) sec.fail("texture", "must be strictly inside (0, 1)");
-		if (t.leg_width >= std::min(t.length, t.width))
-			sec.fail("leg_width", "legs wider than the leg spacing would overlap");
-		for (const auto& c : t.footprint().corners)
-			if (c.x() < w.x_min || c.x() > w.x_max || c.y() < w.y_min || c.y() > w.y_max)
-				sec.fail("", "table lies (partly) outside the arena");
-		// Overlaps: footprints are compared only when their bounding boxes meet (fast on
-		// worlds of thousands of tables).
-		const auto foot = t.footprint();
-		Box b{INFINITY, -INFINITY, INFINITY, -INFINITY};
-		for (const auto& c : foot.corners)
-			b.x0 = std::min(b.x0, c.x()), b.x1 = std::max(b.x1, c.x()), b.y0 = std::min(b.y0, c.y()), b.y1 = std::max(b.y1, c.y());
-		for (size_t j = 0; j < w.tables.size(); j++)
-			if (b.x0 <= boxes[j].x1 && boxes[j].x0 <= b.x1 && b.y0 <= boxes[j].y1 && boxes[j].y0 <= b.y1 &&
-				foot.intersects(feet[j]))
-				sec.fail("", "table overlaps [" + names[j] + "]");
-		w.tables.push_back(t);
-		names.push_back(name);
-		feet.push_back(foot);
-		boxes.push_back(b);
-	}
+	const auto wallNames = detail::readWalls(cfg, path, w);
+	detail::readTables(cfg, path, wallNames, w);
 	return w;
 }
 
@@ -109,6 +65,15 @@ void World::save(const std::string& path, const std::string& comment) const
 			"leg_width=%.10g\ntexture=%.10g\n",
 			i, t.x, t.y, core::rad2deg(t.yaw), t.length, t.width, t.leg_width, t.texture);
 		f << buf;
+		if (t.object_class != ObjectClass()) f << "class=" << t.object_class.str() << "\n";  // default omitted
+	}
+	for (size_t i = 0; i < walls.size(); i++)
+	{
+		const auto& v = walls[i];
+		std::snprintf(
+			buf, sizeof(buf), "\n[wall_%zu]\nx0=%.10g\ny0=%.10g\nx1=%.10g\ny1=%.10g\nthickness=%.10g\ntexture=%.10g\n",
+			i, v.x0, v.y0, v.x1, v.y1, v.thickness, v.texture);
+		f << buf;
 	}
 	if (!f) throw Error(path + ": write failed");
 }
@@ -120,13 +85,21 @@ World World::tiled(int nx, int ny) const
 	w.x_max = x_min + nx * dx;
 	w.y_max = y_min + ny * dy;
 	w.tables.clear();
+	w.walls.clear();
 	for (int j = 0; j < ny; j++)
 		for (int i = 0; i < nx; i++)
+		{
 			for (auto t : tables)
 			{
 				t.x += i * dx, t.y += j * dy;
 				w.tables.push_back(t);
 			}
+			for (auto v : walls)
+			{
+				v.x0 += i * dx, v.x1 += i * dx, v.y0 += j * dy, v.y1 += j * dy;
+				w.walls.push_back(v);
+			}
+		}
 	return w;
 }
 
@@ -141,6 +114,7 @@ std::vector<Obstacle> World::obstacles(double wallThickness) const
 	obs.push_back(Obstacle::rectangle({x_max + T / 2, cy}, 0, T / 2, hy, wall_texture));
 	obs.push_back(Obstacle::rectangle({cx, y_min - T / 2}, 0, hx, T / 2, wall_texture));
 	obs.push_back(Obstacle::rectangle({cx, y_max + T / 2}, 0, hx, T / 2, wall_texture));
+	for (const auto& v : walls) obs.push_back(v.slab());
 	return obs;
 }
 }  // namespace whiskermap::world

@@ -22,52 +22,109 @@ struct Spec
 	double minGap;  ///< smallest footprint gap between tables of different units, metres
 	double closestAtMost;  ///< the closest gap must be at most this (clutter), metres
 	int grid;  ///< n of the n x n paper grid; 0: sparse path
-};
-const Spec SPECS[] = {
-	{"random_yaw", 4, 6, 0, 0.30, INFINITY, 10},
-	{"clutter", 4, 8, 0, 0.15, 0.25, 10},
-	{"side_by_side", 4, 2, 2, 0.30, INFINITY, 10},
-	{"large", 8, 24, 0, 0.30, INFINITY, 20},
-	{"sparse", 4, 6, 0, 0.30, INFINITY, 0},
+	int desks, chairs;  ///< free-standing desks and chairs (after the tables)
+	int walls;  ///< random interior walls
+	double wallMin, wallMax;  ///< every object's footprint gap to the nearest wall, metres
 };
 constexpr double WALL_MARGIN = 0.15;  ///< footprint to wall, metres
+const Spec SPECS[] = {
+	{"random_yaw", 4, 6, 0, 0.30, INFINITY, 10, 0, 0, 0, WALL_MARGIN, INFINITY},
+	{"clutter", 4, 8, 0, 0.15, 0.25, 10, 0, 0, 0, WALL_MARGIN, INFINITY},
+	{"side_by_side", 4, 2, 2, 0.30, INFINITY, 10, 0, 0, 0, WALL_MARGIN, INFINITY},
+	{"large", 8, 24, 0, 0.30, INFINITY, 20, 0, 0, 0, WALL_MARGIN, INFINITY},
+	{"sparse", 4, 6, 0, 0.30, INFINITY, 0, 0, 0, 0, WALL_MARGIN, INFINITY},
+	// Issue 11: interior walls, object classes, objects close to walls.
+	{"walls", 5, 6, 0, 0.30, INFINITY, 12, 0, 0, 3, WALL_MARGIN, INFINITY},
+	{"mixed_classes", 5, 2, 0, 0.30, INFINITY, 12, 2, 4, 0, WALL_MARGIN, INFINITY},
+	{"near_walls", 5, 2, 0, 0.30, INFINITY, 12, 2, 3, 2, 0.05, 0.25},
+};
+constexpr double WALL_THICKNESS = 0.1, WALL_GAP = 0.8;  ///< interior walls; smallest gap between two, metres
 constexpr double FACING_MIN = 0.105, FACING_MAX = 0.195;  ///< facing leg centres of a pair, metres
 constexpr int SPARSE_LEGS = 3, SPARSE_VISITS = 2;  ///< legs visited per table, visits per leg
 
-/** The paper's known table, snapped to 1 mm and 0.1 degree (the .ini holds exactly this). */
-Table knownTable(double x, double y, double yawDeg)
+/** To 1 mm: the nearest double to the decimal the .ini holds (k / 1000 is correctly rounded). */
+double mm(double v)
+{
+	return std::round(v * 1000) / 1000;
+}
+
+/** An object of a class at a pose, snapped to 1 mm and 0.1 degree (the .ini holds exactly
+ *  this): the paper's known table (1.0 x 0.6 m, 5 cm legs, texture 0.7), a desk (1.4 x 0.7 m,
+ *  5 cm legs, 0.6) or a chair (0.42 m square, 3 cm legs, 0.5). */
+Table object(const std::string& cls, double x, double y, double yawDeg)
 {
 	Table t;
-	t.x = std::round(x * 1000) / 1000;
-	t.y = std::round(y * 1000) / 1000;
+	t.x = mm(x);
+	t.y = mm(y);
 	t.yaw = core::deg2rad(std::round(yawDeg * 10) / 10);
-	t.length = 1.0, t.width = 0.6, t.leg_width = 0.05, t.texture = 0.7;
+	t.object_class = ObjectClass(cls);
+	if (cls == "desk") t.length = 1.4, t.width = 0.7, t.leg_width = 0.05, t.texture = 0.6;
+	else if (cls == "chair") t.length = 0.42, t.width = 0.42, t.leg_width = 0.03, t.texture = 0.5;
+	else t.length = 1.0, t.width = 0.6, t.leg_width = 0.05, t.texture = 0.7;
 	return t;
 }
 
-/** A unit: one table, or two side by side (long sides facing, legs `facing` m apart). */
-std::vector<Table> drawUnit(const World& w, bool pair, mrpt::random::CRandomGenerator& rng)
+Table knownTable(double x, double y, double yawDeg)
+{
+	return object("table", x, y, yawDeg);
+}
+
+/** A unit: one object, or two tables side by side (long sides facing, legs `facing` m apart). */
+std::vector<Table> drawUnit(const World& w, bool pair, const std::string& cls, mrpt::random::CRandomGenerator& rng)
 {
 	const double x = rng.drawUniform(w.x_min + WALL_MARGIN, w.x_max - WALL_MARGIN);
 	const double y = rng.drawUniform(w.y_min + WALL_MARGIN, w.y_max - WALL_MARGIN);
 	const double yawDeg = rng.drawUniform(0.0, 180.0);
-	if (!pair) return {knownTable(x, y, yawDeg)};
+	if (!pair) return {object(cls, x, y, yawDeg)};
 	const double facing = rng.drawUniform(FACING_MIN, FACING_MAX);
 	const Eigen::Vector2d half = Eigen::Rotation2Dd(core::deg2rad(yawDeg)) * Eigen::Vector2d(0, (0.6 + facing) / 2);
 	return {knownTable(x - half.x(), y - half.y(), yawDeg), knownTable(x + half.x(), y + half.y(), yawDeg)};
 }
 
-bool fits(const World& w, const std::vector<Table>& unit, double minGap)
+/** Smallest gap from a footprint to the arena's and the interior walls. */
+double wallGap(const World& w, const Obstacle& foot)
+{
+	double g = INFINITY;
+	for (const auto& c : foot.corners)
+		g = std::min({g, c.x() - w.x_min, w.x_max - c.x(), c.y() - w.y_min, w.y_max - c.y()});
+	for (const auto& v : w.walls) g = std::min(g, foot.gap(v.slab()));
+	return g;
+}
+
+bool fits(const World& w, const std::vector<Table>& unit, const Spec& spec)
 {
 	for (const auto& t : unit)
 	{
 		for (const auto& c : t.footprint().corners)
-			if (c.x() < w.x_min + WALL_MARGIN || c.x() > w.x_max - WALL_MARGIN || c.y() < w.y_min + WALL_MARGIN ||
-				c.y() > w.y_max - WALL_MARGIN)
+			if (c.x() < w.x_min + spec.wallMin || c.x() > w.x_max - spec.wallMin || c.y() < w.y_min + spec.wallMin ||
+				c.y() > w.y_max - spec.wallMin)
 				return false;
 		for (const auto& o : w.tables)
-			if (t.footprint().gap(o.footprint()) < minGap) return false;
+			if (t.footprint().gap(o.footprint()) < spec.minGap) return false;
+		if (w.walls.empty() && std::isinf(spec.wallMax)) continue;
+		const double g = wallGap(w, t.footprint());
+		if (g < spec.wallMin || g > spec.wallMax) return false;
 	}
+	return true;
+}
+
+/** A random straight wall (0.1 m thick, texture 0.3, 1 to 2.5 m long, along x or y), ends on
+ *  a 1 mm grid inside the arena; at least WALL_GAP from the walls already placed. */
+bool drawWall(World& w, mrpt::random::CRandomGenerator& rng)
+{
+	const bool alongX = rng.drawUniform(0.0, 1.0) < 0.5;
+	const double len = rng.drawUniform(1.0, 2.5);
+	const double cx = rng.drawUniform(w.x_min, w.x_max), cy = rng.drawUniform(w.y_min, w.y_max);
+	Wall v;
+	v.x0 = mm(alongX ? cx - len / 2 : cx), v.x1 = mm(alongX ? cx + len / 2 : cx);
+	v.y0 = mm(alongX ? cy : cy - len / 2), v.y1 = mm(alongX ? cy : cy + len / 2);
+	v.thickness = WALL_THICKNESS, v.texture = w.wall_texture;
+	if (std::min({v.x0, v.x1}) < w.x_min || std::max({v.x0, v.x1}) > w.x_max || std::min({v.y0, v.y1}) < w.y_min ||
+		std::max({v.y0, v.y1}) > w.y_max)
+		return false;
+	for (const auto& o : w.walls)
+		if (v.slab().gap(o.slab()) < WALL_GAP) return false;
+	w.walls.push_back(v);
 	return true;
 }
 
@@ -76,13 +133,21 @@ std::optional<World> layout(const Spec& spec, mrpt::random::CRandomGenerator& rn
 {
 	World w;
 	w.x_max = w.y_max = spec.arena;
-	for (int u = 0; u < spec.pairs + spec.singles; u++)
+	for (int k = 0; k < spec.walls; k++)
 	{
+		bool placed = false;
+		for (int tries = 0; tries < 1000 && !placed; tries++) placed = drawWall(w, rng);
+		if (!placed) return std::nullopt;
+	}
+	const int tables = spec.pairs + spec.singles;
+	for (int u = 0; u < tables + spec.desks + spec.chairs; u++)
+	{
+		const std::string cls = u < tables ? "table" : u < tables + spec.desks ? "desk" : "chair";
 		bool placed = false;
 		for (int tries = 0; tries < 1000 && !placed; tries++)
 		{
-			const auto unit = drawUnit(w, u < spec.pairs, rng);
-			if ((placed = fits(w, unit, spec.minGap))) w.tables.insert(w.tables.end(), unit.begin(), unit.end());
+			const auto unit = drawUnit(w, u < spec.pairs, cls, rng);
+			if ((placed = fits(w, unit, spec))) w.tables.insert(w.tables.end(), unit.begin(), unit.end());
 		}
 		if (!placed) return std::nullopt;
 	}
@@ -161,14 +226,18 @@ std::string WorldGenerator::Scenario::description() const
 {
 	char buf[512];
 	std::string s;
+	const bool onlyTables = world.walls.empty() &&
+		std::all_of(world.tables.begin(), world.tables.end(), [](const Table& t) { return t.object_class == ObjectClass(); });
 	std::snprintf(
 		buf, sizeof(buf),
 		"whisker-worldgen --category %s --seed %llu (layout %d); doc/eval-worlds.md\n"
-		"arena %g x %g m, %zu tables (1.0 x 0.6 m, 5 cm legs, texture 0.7; walls 0.3), closest footprint gap %.3f m\n"
+		"arena %g x %g m, %zu %s, closest footprint gap %.3f m\n"
 		"path: %zu poses (%zu blocked grid poses dropped), %zu contacts, %zu on table legs\n"
 		"identifiable tables (simulator truth: touched on >= 2 legs): %zu of %zu; legs touched per table:",
 		category.c_str(), static_cast<unsigned long long>(seed), attempt, world.x_max - world.x_min,
-		world.y_max - world.y_min, world.tables.size(), closestGap, path.size(), droppedPoses,
+		world.y_max - world.y_min, world.tables.size(),
+		onlyTables ? "tables (1.0 x 0.6 m, 5 cm legs, texture 0.7; walls 0.3)" : "objects (classes and walls below)", closestGap,
+		path.size(), droppedPoses,
 		audit.contacts.size(), audit.tableContacts(), audit.identifiable(), world.tables.size());
 	s += buf;
 	for (const auto& b : audit.legsTouched) s += " " + std::to_string(b.count());
@@ -194,6 +263,21 @@ std::string WorldGenerator::Scenario::description() const
 	const size_t spacing = audit.closestCrossLegSpacing();
 	s += "\nclosest contacts on two legs of one table: " +
 		 (spacing == SIZE_MAX ? std::string("never") : std::to_string(spacing) + " contacts apart") + "\n";
-	return s + verified + "\n";
+	// Issue 11's categories: classes and interior walls (absent from the older ones' text).
+	if (onlyTables) return s + verified + "\n";
+	size_t desks = 0, chairs = 0;
+	double toWall = INFINITY;
+	for (const auto& t : world.tables)
+	{
+		desks += t.object_class.str() == "desk", chairs += t.object_class.str() == "chair";
+		toWall = std::min(toWall, wallGap(world, t.footprint()));
+	}
+	std::snprintf(
+		buf, sizeof(buf),
+		"objects: %zu tables (1.0 x 0.6 m, 5 cm legs, texture 0.7), %zu desks (1.4 x 0.7 m, 5 cm legs, 0.6), %zu chairs "
+		"(0.42 m square, 3 cm legs, 0.5); %zu interior walls (0.1 m thick, texture 0.3; arena walls 0.3); closest "
+		"footprint to a wall %.3f m\n",
+		world.tables.size() - desks - chairs, desks, chairs, world.walls.size(), toWall);
+	return s + buf + verified + "\n";
 }
 }  // namespace whiskermap::world

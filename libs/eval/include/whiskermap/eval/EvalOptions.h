@@ -22,6 +22,11 @@ struct EvalOptions
 	double local_radius = 1.5;
 	/** Relative pose error: segments of at least this much true travel (metres). */
 	double rpe_segment_m = 1.0;
+	/** Walls (issue 11): a point of one wall's centre line is covered by another wall whose
+	 *  centre line passes within this distance (metres), directions within gate_yaw_deg:
+	 *  half a wall's 0.1 m thickness plus 0.1 m of error. Last: the Python bindings build
+	 *  the options positionally. */
+	double wall_gate = 0.15;
 
 	/** Throws core::Error naming the first option out of range. */
 	void validate() const;

@@ -4,6 +4,7 @@
 #include <whiskermap/eval/MapEvaluation.h>
 #include <whiskermap/eval/PerPoseEvaluation.h>
 #include <whiskermap/eval/TrajectoryEvaluation.h>
+#include <whiskermap/eval/WallEvaluation.h>
 
 #include <optional>
 #include <string>
@@ -19,6 +20,7 @@ struct EvalReport
 	std::optional<Identifiability> identifiability;  ///< when a rawlog was given (with a map)
 	std::optional<PerPoseEvaluation> perPose;  ///< when per-pose tables were given
 	std::optional<TrajectoryEvaluation> trajectory;  ///< when an estimated path was given
+	std::optional<WallEvaluation> walls;  ///< when estimated walls were given
 
 	/** `{ "precision": ..., ..., "per_pose": { ... }, "trajectory": { ... } }`, ending in a
 	 *  newline; the map's figures only with a map. Numbers have six decimals (counts none); an

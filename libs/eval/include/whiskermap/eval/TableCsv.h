@@ -1,5 +1,6 @@
 #pragma once
 #include <whiskermap/world/Table.h>
+#include <whiskermap/world/Wall.h>
 
 #include <cstdint>
 #include <memory>
@@ -18,6 +19,11 @@ class TableCsv
    public:
 	static constexpr const char* MAP_HEADER =
 		"id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs";
+	/** The same with the objects' classes (issue 11): a map without it holds tables. */
+	static constexpr const char* MAP_HEADER_CLASS =
+		"id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs,class";
+	/** `map_walls.csv`: one estimated wall per row (centre line end points, metres). */
+	static constexpr const char* WALLS_HEADER = "x0,y0,x1,y1,thickness,existence";
 	static constexpr const char* PER_POSE_HEADER =
 		"pose,x,y,yaw_deg,length,width,leg_width,texture,log_posterior";
 
@@ -31,8 +37,19 @@ class TableCsv
 		uint32_t legs = 0;  ///< legs with a contact, 0..4
 	};
 
-	/** `map_tables.csv` (or `map_candidates.csv`). Ids must be distinct. */
-	static std::vector<MapRow> readMap(const std::string& path);
+	/** `map_tables.csv` (or `map_candidates.csv`), with or without the class column (a
+	 *  class: 1 to 31 letters, digits or _; `hasClass`, if given, tells which). Ids must be
+	 *  distinct. */
+	static std::vector<MapRow> readMap(const std::string& path, bool* hasClass = nullptr);
+
+	/** One estimated wall of `map_walls.csv`. */
+	struct WallRow
+	{
+		world::Wall wall;  ///< texture unused (0)
+		double existence = 0;  ///< in [0, 1]
+	};
+	/** `map_walls.csv`: a wall of zero length is an error. */
+	static std::vector<WallRow> readWalls(const std::string& path);
 
 	/** `per_pose_tables.csv` one pose at a time, in bounded memory: rows must come in pose
 	 *  order (as whisker-map writes them); a pose index out of [0, poses) or out of order is

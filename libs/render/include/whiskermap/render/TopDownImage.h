@@ -21,7 +21,7 @@ class TopDownImage
 	 *  drops so that neither side exceeds `maxSide` pixels (large worlds). */
 	TopDownImage(double x0, double x1, double y0, double y1, double pxPerMetre = 150, int maxSide = 4000);
 
-	/** Walls of a world's arena. */
+	/** Walls of a world's arena, and its interior walls (their slabs' outlines). */
 	void arena(const world::World& w, mrpt::img::TColor c);
 	/** A table: the rectangle through its leg centres and its four leg squares. */
 	void table(const world::Table& t, mrpt::img::TColor c, unsigned width = 1);

@@ -1,12 +1,13 @@
 #pragma once
 #include <Eigen/Core>
+#include <whiskermap/world/ObjectClass.h>
 #include <whiskermap/world/Obstacle.h>
 
 #include <array>
 
 namespace whiskermap::world
 {
-/** A ground-truth four-legged table: the paper's T(x_T, y_T, theta_T, w_T^L, tau_T) with its
+/** A ground-truth four-legged object (a table, or a desk, chair, ... by its class): the paper's T(x_T, y_T, theta_T, w_T^L, tau_T) with its
  *  size. Leg centres sit at (+-length/2, +-width/2) in the table frame; legs are squares of
  *  side leg_width aligned with the table. Same table under a 180 degree turn. */
 struct Table
@@ -17,6 +18,7 @@ struct Table
 	double width = 0;  ///< leg-centre spacing along the table's y axis, metres
 	double leg_width = 0;  ///< side of the square legs, metres
 	double texture = 0;  ///< in (0, 1)
+	ObjectClass object_class{};  ///< ground-truth class label, default "table" (initialiser: no warning on {x, y, ...})
 
 	/** Centre of leg k (0: +x+y, 1: -x+y, 2: -x-y, 3: +x-y, counter-clockwise). */
 	Eigen::Vector2d legCentre(int k) const;
