@@ -13,6 +13,7 @@ BlackboardSampler::BlackboardSampler(const model::ModelParams& model, const Samp
 	: m_model(model),
 	  m_params(params),
 	  m_bb(model),
+	  m_acceptance(params.acceptance),
 	  m_ctx(m_bb, m_model, m_params, m_rng, m_acceptance),
 	  m_moves(m_model),
 	  m_best(model)
