@@ -3,9 +3,12 @@
 // logJoint and log proposal ratios are negatives of each other. Each move's logTarget is also
 // checked against logJoint itself.
 #include <whiskermap/inference/moves/LegBirthDeath.h>
+#include <whiskermap/inference/moves/LegRefit.h>
 #include <whiskermap/inference/moves/LegReparent.h>
+#include <whiskermap/inference/moves/ShapeletLink.h>
 #include <whiskermap/inference/moves/SplitMerge.h>
 #include <whiskermap/inference/moves/TableBirthDeath.h>
+#include <whiskermap/inference/moves/TableRefit.h>
 
 #include "MoveBoards.h"
 
@@ -103,9 +106,11 @@ TEST(MoveRoundTrip, SplitThenMerge)
 		EXPECT_EQ(std::isfinite(split.logReverse), seed % 2 == 0) << seed;
 		if (seed % 2) continue;  // no reverse claimed
 		const Id other = b.bb.shapeletParent(s);
+		const double afterSplit = model::logJoint(b.bb);
 		const auto merge = move.merge(b.ctx, from, other);
 		ASSERT_TRUE(merge.has_value()) << seed;
 		move.finish(b.ctx, true);
+		EXPECT_NEAR(model::logJoint(b.bb) - afterSplit, merge->logTarget, 1e-7);
 		test::expectReverses(split, *merge, "split, merge");
 		test::expectSameBoard(before, b.bb, "split, merge");
 		tried++;
@@ -163,4 +168,42 @@ TEST(MoveRoundTrip, TableBirthThenDeath)
 		tried++;
 	}
 	EXPECT_EQ(tried, static_cast<int>(BOARDS));
+}
+
+// Every move's logTarget is the exact change of logJoint (applied() checks it), for the moves
+// without a round trip too: links (with their refit and drop), leg and table refits. (Births,
+// deaths, splits, merges, reparents and table births are checked in the round trips above.)
+TEST(MoveRoundTrip, LogTargetIsTheChangeOfLogJoint)
+{
+	int links = 0, legRefits = 0, tableRefits = 0;
+	for (uint64_t seed = 0; seed < BOARDS; seed++)
+	{
+		MoveBoard b(seed, seed % 2);
+		const std::vector<Id> legs = b.legs();
+		const auto s = b.pick(b.bb.shapelets().size());
+		const Id to = legs[b.pick(legs.size())];
+		if (b.bb.shapeletParent(s) != to)
+		{
+			inference::moves::ShapeletLink move;
+			applied(b, move, [&] { return move.link(b.ctx, s, to, inference::Move::Child); });
+			links++;
+		}
+		for (int i = 0; i < 2; i++)  // the second time at the fit: a zero change
+		{
+			inference::moves::LegRefit move;
+			const Id l = b.legs()[0];
+			if (!move.propose(b.ctx, l)) continue;
+			move.finish(b.ctx, false);
+			applied(b, move, [&] { return *move.propose(b.ctx, l); });
+			legRefits++;
+		}
+		inference::moves::TableRefit move;
+		if (b.table == NONE || !move.propose(b.ctx, b.table)) continue;
+		move.finish(b.ctx, false);
+		applied(b, move, [&] { return *move.propose(b.ctx, b.table); });
+		tableRefits++;
+	}
+	EXPECT_GE(links, 10);
+	EXPECT_GE(legRefits, 10);
+	EXPECT_GE(tableRefits, 5);
 }
