@@ -133,8 +133,14 @@ TEST(OracleAgreement, SamplerFindsTheExactMap)
 	};
 	std::vector<Outcome> out(problems.size());
 	const ExactMapOracle oracle(P);
+	// WHISKERMAP_AGREEMENT_ACCEPTANCE=reversible_jump measures the other acceptance rule
+	// (doc/sampler.md); the regression floor holds for the default rule only.
+	SamplerParams params;
+	const char* rule = std::getenv("WHISKERMAP_AGREEMENT_ACCEPTANCE");
+	if (rule && std::string(rule) == "reversible_jump") params.acceptance = inference::AcceptanceRule::ReversibleJump;
+	ASSERT_TRUE(!rule || std::string(rule) == "gibbs" || std::string(rule) == "reversible_jump") << rule;
 	const auto work = [&](size_t first) {
-		BlackboardSampler sampler(P, SamplerParams{});
+		BlackboardSampler sampler(P, params);
 		for (size_t i = first; i < problems.size(); i += 2)
 		{
 			out[i].samplerSeconds = seconds([&] { out[i].sampler = sampler.step(problems[i].shapelets, i); });
@@ -180,5 +186,8 @@ TEST(OracleAgreement, SamplerFindsTheExactMap)
 	EXPECT_EQ(above, 0u);
 	// Regression floor: the measured rate minus a margin. The target is 95% (doc/benchmarks.md
 	// reports where the sampler stands against it); raise this floor as the sampler improves.
-	EXPECT_GE(rate, MIN_AGREEMENT_PERCENT);
+	if (params.acceptance == inference::AcceptanceRule::Gibbs)
+	{
+		EXPECT_GE(rate, MIN_AGREEMENT_PERCENT);
+	}
 }

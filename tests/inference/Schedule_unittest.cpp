@@ -53,6 +53,7 @@ TEST(SamplerParams, ShippedConfigEqualsBuiltInDefaults)
 	EXPECT_EQ(f.merge_probability, d.merge_probability);
 	EXPECT_EQ(f.leg_position_noise, d.leg_position_noise);
 	EXPECT_EQ(f.leg_angle_noise, d.leg_angle_noise);
+	EXPECT_EQ(f.acceptance, d.acceptance);
 }
 
 TEST(SamplerParams, BadKeysFail)
@@ -72,4 +73,13 @@ TEST(SamplerParams, BadKeysFail)
 	std::string swapped = text;
 	swapped.replace(swapped.find("r1=0.2"), 6, "r1=0.5");  // r1 > r2
 	EXPECT_THROW(load(swapped), core::Error);
+	const auto rule = [&](const std::string& value) {
+		std::string t = text;
+		t.replace(t.find("acceptance=gibbs"), 16, "acceptance=" + value);
+		return load(t).acceptance;
+	};
+	EXPECT_EQ(rule("gibbs"), inference::AcceptanceRule::Gibbs);
+	EXPECT_EQ(rule("reversible_jump"), inference::AcceptanceRule::ReversibleJump);
+	EXPECT_THROW(rule("metropolis"), core::Error);
+	EXPECT_THROW(rule("Gibbs"), core::Error);
 }

@@ -1,5 +1,7 @@
 #include <whiskermap/inference/SamplerParams.h>
 
+#include <string>
+
 namespace whiskermap::inference
 {
 SamplerParams SamplerParams::fromIni(core::IniSection& sec)
@@ -19,6 +21,11 @@ SamplerParams SamplerParams::fromIni(core::IniSection& sec)
 	p.merge_probability = sec.number("merge_probability", 0, 1);
 	p.leg_position_noise = sec.number("leg_position_noise", 0, 1);
 	p.leg_angle_noise = sec.number("leg_angle_noise", 0, 1);
+	const std::string rule = sec.text("acceptance", "gibbs");
+	if (rule == "reversible_jump")
+		p.acceptance = AcceptanceRule::ReversibleJump;
+	else if (rule != "gibbs")
+		sec.fail("acceptance", "must be gibbs or reversible_jump, not '" + rule + "'");
 	sec.finish();
 	return p;
 }

@@ -4,6 +4,13 @@
 
 namespace whiskermap::inference
 {
+/** How the sampler accepts a move's proposal (Acceptance.h, doc/sampler.md "Acceptance"). */
+enum class AcceptanceRule
+{
+	Gibbs,  ///< the paper's heuristic: P^beta(H | mb(H)) (eq. 20), proposal densities ignored
+	ReversibleJump,  ///< Green 1995: min(1, (p'/p)^beta q(reverse) / q(forward) |J|)
+};
+
 /** Settings of the annealed blackboard sampler (Algorithm 1). Defaults and reasons:
  *  config/whisker-map.ini [MetricMap_hierarchicalObjectMap_00_sampler], doc/sampler.md. */
 struct SamplerParams
@@ -28,9 +35,11 @@ struct SamplerParams
 	double merge_probability = 0.5;
 	double leg_position_noise = 0.003;  ///< std-dev of a new leg's centre, metres
 	double leg_angle_noise = 0.02;  ///< std-dev of a new leg's yaw, radians
+	/** Key `acceptance` (optional): `gibbs` (default) or `reversible_jump`. */
+	AcceptanceRule acceptance = AcceptanceRule::Gibbs;
 
-	/** Reads every key of `sec` (all required; the schedule as beta_start, beta_end,
-	 *  temperatures) and calls sec.finish(); throws core::Error. */
+	/** Reads every key of `sec` (all required but `acceptance`; the schedule as beta_start,
+	 *  beta_end, temperatures) and calls sec.finish(); throws core::Error. */
 	static SamplerParams fromIni(core::IniSection& sec);
 };
 }  // namespace whiskermap::inference

@@ -1,0 +1,30 @@
+#pragma once
+#include <whiskermap/inference/moves/MoveContext.h>
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace whiskermap::inference::moves
+{
+/** Refit of a table and its legs (doc/sampler.md, "Moves"): twice (fit the table to its legs
+ *  that explain shapelets, then refit those legs to their contacts and new corners), then
+ *  its invented legs onto its corners. Judged on the exact change of logJoint
+ *  (logJointAround). Deterministic (logForward = 0) with no reverse (logReverse = -inf)
+ *  unless nothing moved (0). */
+class TableRefit
+{
+   public:
+	/** nullopt (board unchanged) if no leg of t explains a shapelet or a leg's fit leaves
+	 *  the gate. */
+	std::optional<Proposal> propose(MoveContext& ctx, model::Id t);
+	void finish(MoveContext& ctx, bool accepted);
+
+   private:
+	model::Id m_table = model::NONE;
+	model::Table m_old;
+	std::vector<std::pair<model::Id, model::Leg>> m_savedLegs;
+	std::vector<const model::Leg*> m_fitLegs;
+	std::vector<int> m_fitCorners;
+};
+}  // namespace whiskermap::inference::moves

@@ -1,0 +1,127 @@
+#include <whiskermap/core/Angles.h>
+#include <whiskermap/inference/Acceptance.h>
+#include <whiskermap/inference/PoseFit.h>
+#include <whiskermap/inference/moves/MoveContext.h>
+#include <whiskermap/model/Densities.h>
+#include <whiskermap/model/Posterior.h>
+
+#include <algorithm>
+
+namespace whiskermap::inference::moves
+{
+using model::Id;
+using model::Leg;
+
+namespace
+{
+/** Weight of "stay near the current centre" in a free leg's refit: it only fixes the
+ *  position along a face when the contacts leave it open (PoseFit.h). */
+constexpr double FREE_LEG_PULL = 1e-3;
+}  // namespace
+
+MoveContext::MoveContext(
+	model::Blackboard& board, const model::ModelParams& modelParams, const SamplerParams& samplerParams,
+	SamplerRandom& random, const Acceptance& acceptance)
+	: bb(board), mp(modelParams), sp(samplerParams), rng(random), m_acceptance(acceptance)
+{
+}
+
+bool MoveContext::accept(const Proposal& p)
+{
+	const bool yes = m_acceptance.accept(p, beta, rng);
+	count(p.kind, yes);
+	return yes;
+}
+
+void MoveContext::count(Move m, bool accepted)
+{
+	const auto i = static_cast<size_t>(m);
+	result->proposed[i]++;
+	result->accepted[i] += accepted;
+}
+
+// The contact lies on the leg's face with outward normal theta_S: the centre is half a leg
+// width inward along -normal, anywhere along the face.
+Leg MoveContext::newLegFor(size_t s)
+{
+	const obs::Shapelet& sh = bb.shapelets()[s];
+	const double w = mp.leg_width, nx = std::cos(sh.normal), ny = std::sin(sh.normal);
+	double along = 0;
+	if (!adjacentFaceOffset(s, along)) along = (rng.uniform() - 0.5) * w;
+	Leg l;
+	l.x = sh.x - nx * w / 2 - ny * along + sp.leg_position_noise * rng.gaussian();
+	l.y = sh.y - ny * w / 2 + nx * along + sp.leg_position_noise * rng.gaussian();
+	l.theta = sh.normal + sp.leg_angle_noise * rng.gaussian();
+	l.wx = l.wy = w;
+	l.texture = sh.texture;
+	return l;
+}
+
+// Another shapelet nearby with a normal a quarter turn away lies on the adjacent face of the
+// same square leg, which fixes the offset.
+bool MoveContext::adjacentFaceOffset(size_t s, double& offset) const
+{
+	const double w = mp.leg_width, gate = 3 * mp.sigma_theta;
+	const obs::Shapelet& a = bb.shapelets()[s];
+	for (const obs::Shapelet& b : bb.shapelets())
+	{
+		const double turn = core::angleDiff(b.normal, a.normal, 2 * M_PI);
+		if (std::hypot(b.x - a.x, b.y - a.y) > 1.5 * w || std::abs(std::abs(turn) - M_PI_2) > gate) continue;
+		const double side = turn > 0 ? 1 : -1;  // b's normal = a's tangent * side
+		const double tx = -std::sin(a.normal), ty = std::cos(a.normal);
+		offset = std::clamp(side * ((b.x - a.x) * tx * side + (b.y - a.y) * ty * side - w / 2), -w / 2, w / 2);
+		return true;
+	}
+	return false;
+}
+
+void MoveContext::legsNearShapelet(size_t s, std::vector<Id>& out) const
+{
+	const obs::Shapelet& sh = bb.shapelets()[s];
+	out.clear();
+	bb.forEachLegNear(sh.x, sh.y, bb.maxLegRadius() + mp.parent_gate, [&](Id l) {
+		if (model::legRect(bb.leg(l)).perimeter(sh.x, sh.y).distance <= mp.parent_gate) out.push_back(l);
+	});
+}
+
+bool MoveContext::fittedLeg(Id l, const model::Table* t, Leg& out)
+{
+	const Leg& leg = bb.leg(l);
+	m_contacts.clear();
+	for (const Id s : bb.shapeletsOf(l)) m_contacts.push_back(&bb.shapelets()[static_cast<size_t>(s)]);
+	const model::LegEvidence& evidence = bb.evidence(l);
+	if (m_contacts.empty() && evidence.empty() && !t) return false;
+	double qx = leg.x, qy = leg.y, pull = FREE_LEG_PULL;
+	if (t)
+	{
+		model::tableCorner(*t, model::logLegGivenTable(leg, *t, mp).corner, mp, qx, qy);
+		pull = 1;
+	}
+	out = fitLeg(mp, m_contacts.data(), m_contacts.size(), t, qx, qy, pull, &evidence);
+	out.parent = leg.parent;
+	const model::OrientedRect r = model::legRect(out);
+	for (const obs::Shapelet* s : m_contacts)
+		if (r.perimeter(s->x, s->y).distance > mp.parent_gate) return false;
+	return !t || std::hypot(out.x - qx, out.y - qy) <= mp.parent_gate;
+}
+
+bool MoveContext::refitInPlace(Id l, double& gain)
+{
+	Leg fit;
+	const Id parent = bb.leg(l).parent;
+	if (!fittedLeg(l, parent == model::NONE ? nullptr : &bb.table(parent), fit)) return false;
+	gain -= model::logOddsLeg(bb, l);
+	bb.setLeg(l, fit);
+	gain += model::logOddsLeg(bb, l);
+	return true;
+}
+bool MoveContext::atFit(Id l)
+{
+	Leg fit;
+	const Leg& leg = bb.leg(l);
+	if (!fittedLeg(l, leg.parent == model::NONE ? nullptr : &bb.table(leg.parent), fit)) return true;
+	constexpr double EPS = 1e-12;
+	return std::abs(fit.x - leg.x) <= EPS && std::abs(fit.y - leg.y) <= EPS && std::abs(fit.theta - leg.theta) <= EPS &&
+		   std::abs(fit.texture - leg.texture) <= EPS;
+}
+}  // namespace whiskermap::inference::moves

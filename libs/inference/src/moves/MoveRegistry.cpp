@@ -1,0 +1,126 @@
+#include <whiskermap/inference/PoseFit.h>
+#include <whiskermap/inference/moves/LegBirthDeath.h>
+#include <whiskermap/inference/moves/LegRefit.h>
+#include <whiskermap/inference/moves/LegReparent.h>
+#include <whiskermap/inference/moves/MoveRegistry.h>
+#include <whiskermap/inference/moves/ShapeletLink.h>
+#include <whiskermap/inference/moves/SplitMerge.h>
+#include <whiskermap/inference/moves/TableBirthDeath.h>
+#include <whiskermap/inference/moves/TableRefit.h>
+#include <whiskermap/model/Densities.h>
+
+#include <memory>
+
+namespace whiskermap::inference::moves
+{
+using model::Id;
+
+namespace
+{
+/** Proposes with `propose` (nullopt: nothing proposed) and lets the sampler judge it. */
+template <class M, class Propose>
+void tryMove(MoveContext& ctx, M& move, Propose&& propose)
+{
+	if (const std::optional<Proposal> p = propose()) ctx.judge(move, *p);
+}
+
+/** Priming, Q(pa(S)): with prob. existing_leg_probability a link to a leg near s (if any),
+ *  else a new leg for s. */
+struct Priming
+{
+	ShapeletLink link;
+	LegBirthDeath birth;
+	std::vector<Id> legs;
+
+	void operator()(MoveContext& ctx, Id s)
+	{
+		const auto shapelet = static_cast<size_t>(s);
+		ctx.legsNearShapelet(shapelet, legs);
+		if (!legs.empty() && ctx.rng.uniform() < ctx.sp.existing_leg_probability)
+			ctx.judge(link, link.link(ctx, shapelet, legs[ctx.rng.pick(legs.size())], Move::Priming));
+		else
+			ctx.judge(birth, birth.birthFor(ctx, shapelet));
+	}
+};
+
+/** Q(ch(L) | L): half the time (if L keeps something) a split of one of its contacts; else
+ *  with prob. merge_probability a merge with a nearby leg; else a link of a nearby shapelet.
+ *  The polish offers the split, every merge and a link. */
+struct LegChild
+{
+	SplitMerge splitMerge;
+	ShapeletLink link;
+	std::vector<Id> candidates, mergeable;
+
+	void operator()(MoveContext& ctx, Id l)
+	{
+		const model::Blackboard& bb = ctx.bb;
+		candidates = bb.shapeletsOf(l);
+		// A split needs a contact to leave and something to stay: another contact or folded evidence.
+		if (!candidates.empty() && candidates.size() + !bb.evidence(l).empty() >= 2 &&
+			(ctx.greedy() || ctx.rng.uniform() < 0.5))
+		{
+			const auto s = static_cast<size_t>(candidates[ctx.rng.pick(candidates.size())]);
+			ctx.judge(splitMerge, splitMerge.split(ctx, s));
+			if (!ctx.greedy()) return;
+		}
+		if (ctx.greedy() || ctx.rng.uniform() < ctx.sp.merge_probability)
+		{
+			SplitMerge::candidates(ctx, l, mergeable);
+			if (ctx.greedy())
+			{
+				for (size_t i = 0; i < mergeable.size() && bb.hasLeg(l); i++)
+					if (bb.hasLeg(mergeable[i])) tryMove(ctx, splitMerge, [&] { return splitMerge.merge(ctx, l, mergeable[i]); });
+				if (!bb.hasLeg(l)) return;
+			}
+			else if (!mergeable.empty())
+			{
+				const Id other = mergeable[ctx.rng.pick(mergeable.size())];
+				tryMove(ctx, splitMerge, [&] { return splitMerge.merge(ctx, l, other); });
+				return;
+			}
+		}
+		const model::OrientedRect r = model::legRect(bb.leg(l));
+		candidates.clear();
+		for (size_t s = 0; s < bb.shapelets().size(); s++)
+			if (bb.shapeletParent(s) != l &&
+				r.perimeter(bb.shapelets()[s].x, bb.shapelets()[s].y).distance <= ctx.mp.parent_gate)
+				candidates.push_back(static_cast<Id>(s));
+		if (candidates.empty()) return;
+		const auto s = static_cast<size_t>(candidates[ctx.rng.pick(candidates.size())]);
+		ctx.judge(link, link.link(ctx, s, l, Move::Child));
+	}
+};
+}  // namespace
+
+MoveRegistry::MoveRegistry(const model::ModelParams& p)
+{
+	const auto legs = std::make_shared<LegBirthDeath>();
+	const auto tables = std::make_shared<TableBirthDeath>(p);
+	const auto legRefit = std::make_shared<LegRefit>();
+	const auto tableRefit = std::make_shared<TableRefit>();
+	const auto reparent = std::make_shared<LegReparent>();
+	// Name, target, slot, offers per polish sweep, visit; a sweep offers them in this order.
+	m_entries = {
+		{"priming", Target::Shapelet, Slot::Always, 1, Priming{}},
+		{"table death", Target::Table, Slot::Death, 1,
+		 [=](MoveContext& c, Id t) { c.judge(*tables, tables->death(c, t)); }},
+		{"table child", Target::Table, Slot::Child, 3,
+		 [=](MoveContext& c, Id t) { tryMove(c, *legs, [&] { return legs->birthAtCorner(c, t); }); }},
+		{"table refit", Target::Table, Slot::Refit, 1,
+		 [=](MoveContext& c, Id t) { tryMove(c, *tableRefit, [&] { return tableRefit->propose(c, t); }); }},
+		{"leg death", Target::Leg, Slot::Death, 1,
+		 [=](MoveContext& c, Id l) { tryMove(c, *legs, [&] { return legs->death(c, l); }); }},
+		{"leg reparent", Target::Leg, Slot::NewParent, 1,
+		 [=](MoveContext& c, Id l) { tryMove(c, *reparent, [&] { return reparent->propose(c, l); }); }},
+		{"leg child", Target::Leg, Slot::Child, 1, LegChild{}},
+		{"leg refit", Target::Leg, Slot::Refit, 1,
+		 [=](MoveContext& c, Id l) { tryMove(c, *legRefit, [&] { return legRefit->propose(c, l); }); }},
+		{"table for leg", Target::Leg, Slot::Parent, 1,
+		 [=](MoveContext& c, Id l) { c.judge(*tables, tables->birth(c, l)); }},
+		// Greedy compass search of the leg's pose on its exact local log-odds (PoseFit.h).
+		{"leg pose search", Target::Leg, Slot::PolishLastSweep, 1,
+		 [](MoveContext& c, Id l) { c.count(Move::Refit, searchLegPose(c.bb, l, 1e-9) > 0); }},
+	};
+}
+}  // namespace whiskermap::inference::moves

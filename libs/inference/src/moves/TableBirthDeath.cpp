@@ -1,0 +1,120 @@
+#include <whiskermap/inference/PoseFit.h>
+#include <whiskermap/inference/TableProposals.h>
+#include <whiskermap/inference/moves/TableBirthDeath.h>
+#include <whiskermap/model/Densities.h>
+#include <whiskermap/model/Posterior.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace whiskermap::inference::moves
+{
+using model::Id;
+using model::NONE;
+using model::Table;
+
+// Death of a table takes the legs it invented (they explain nothing; the prune would remove
+// them), so the move is judged on the whole change. Undone exactly on rejection.
+Proposal TableBirthDeath::death(MoveContext& ctx, Id t)
+{
+	m_backup = ctx.bb;
+	m_restore = true;
+	m_table = NONE;
+	Proposal p{Move::Death, removeTableAndOrphans(ctx.bb, t, m_orphans)};
+	p.logReverse = -std::numeric_limits<double>::infinity();
+	return p;
+}
+
+// Candidate i is drawn with weight ADOPT_WEIGHT^n_i, n_i the other legs it would adopt (legs
+// within the parent gate of one of its still empty corners): 8 tables with the leg at one of
+// 4 corners in one of the 2 yaws (mod pi) consistent with the leg's yaw (mod pi/2), and the
+// pair tables.
+Table TableBirthDeath::drawCandidate(MoveContext& ctx, Id l, double& logProbability)
+{
+	constexpr double ADOPT_WEIGHT = 4;
+	m_tables.clear();
+	for (int i = 0; i < 8; i++) m_tables.push_back(tableWithLegAt(ctx.mp, ctx.bb.leg(l), i / 2, i % 2 ? M_PI_2 : 0.0));
+	tablesForPairs(ctx.bb, l, m_tables);
+	m_weights.clear();
+	double total = 0;
+	for (const Table& t : m_tables)
+		total += m_weights.emplace_back(std::pow(ADOPT_WEIGHT, static_cast<double>(adoptable(ctx.bb, t, l, m_candidates))));
+	size_t choice = 0;
+	for (double u = ctx.rng.uniform() * total; choice + 1 < m_tables.size() && u >= m_weights[choice]; choice++)
+		u -= m_weights[choice];
+	logProbability = std::log(m_weights[choice] / total);
+	return m_tables[choice];
+}
+
+// The new table adopts the legs in the same move, so the move is judged on all the evidence
+// it explains.
+Proposal TableBirthDeath::birth(MoveContext& ctx, Id l)
+{
+	model::Blackboard& bb = ctx.bb;
+	Proposal p{Move::Parent};
+	// The chosen table, fitted to all the legs it adopts (PoseFit.h), then adopting anew.
+	Table chosen = drawCandidate(ctx, l, p.logForward);
+	adoptable(bb, chosen, l, m_candidates);  // fills m_candidates with the adopted legs
+	m_candidates.push_back(l);
+	m_fitLegs.clear();
+	m_fitCorners.clear();
+	for (const Id a : m_candidates)
+	{
+		m_fitLegs.push_back(&bb.leg(a));
+		m_fitCorners.push_back(model::logLegGivenTable(bb.leg(a), chosen, ctx.mp).corner);
+	}
+	if (m_candidates.size() > 1) chosen = fitTable(ctx.mp, chosen, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
+	adoptable(bb, chosen, l, m_candidates);
+	m_candidates.push_back(l);
+
+	// Tables the adopted legs leave without any leg that explains a shapelet are pruned at
+	// the end of the sweep anyway: the move removes them itself, so it is judged on that.
+	m_abandoned.clear();
+	for (const Id a : m_candidates)
+	{
+		const Id parent = bb.leg(a).parent;
+		if (parent != NONE && !hasSupportedLeg(bb, parent, m_candidates) &&
+			std::find(m_abandoned.begin(), m_abandoned.end(), parent) == m_abandoned.end())
+			m_abandoned.push_back(parent);
+	}
+	m_restore = !m_abandoned.empty();
+	if (m_restore) m_backup = bb;
+
+	// Exact change of logJoint, one local step at a time: unlink the adopted legs, add the
+	// table with them all as children (eq. 20 of the new table), remove abandoned tables.
+	bool reversible = m_abandoned.empty();
+	m_oldParents.clear();
+	for (const Id a : m_candidates)
+	{
+		m_oldParents.push_back(bb.leg(a).parent);
+		reversible = reversible && bb.leg(a).parent == NONE && bb.explains(a);
+		p.logTarget -= model::logLegLinkGain(bb, a, bb.leg(a).parent);
+		bb.setLegParent(a, NONE);
+	}
+	m_table = bb.addTable(chosen);
+	for (const Id a : m_candidates) bb.setLegParent(a, m_table);
+	p.logTarget += model::logOddsTable(bb, m_table);
+	for (const Id t : m_abandoned) p.logTarget += removeTableAndOrphans(bb, t, m_orphans);
+	p.logReverse = reversible ? 0 : -std::numeric_limits<double>::infinity();
+	return p;
+}
+
+void TableBirthDeath::finish(MoveContext& ctx, bool accepted)
+{
+	if (accepted) return;
+	if (m_restore)
+	{
+		ctx.bb = m_backup;
+		return;
+	}
+	ctx.bb.removeTable(m_table);
+	for (size_t i = 0; i < m_candidates.size(); i++) ctx.bb.setLegParent(m_candidates[i], m_oldParents[i]);
+}
+
+bool TableBirthDeath::hasSupportedLeg(const model::Blackboard& bb, Id table, const std::vector<Id>& except)
+{
+	for (const Id l : bb.legsOf(table))
+		if (bb.explains(l) && std::find(except.begin(), except.end(), l) == except.end()) return true;
+	return false;
+}
+}  // namespace whiskermap::inference::moves

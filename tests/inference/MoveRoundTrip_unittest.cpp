@@ -1,0 +1,209 @@
+// Round trips of the sampler's moves (doc/sampler.md, "Moves"): on random small boards, a move
+// and then its declared reverse give back the same board, and the two Proposals' changes of
+// logJoint and log proposal ratios are negatives of each other. Each move's logTarget is also
+// checked against logJoint itself.
+#include <whiskermap/inference/moves/LegBirthDeath.h>
+#include <whiskermap/inference/moves/LegRefit.h>
+#include <whiskermap/inference/moves/LegReparent.h>
+#include <whiskermap/inference/moves/ShapeletLink.h>
+#include <whiskermap/inference/moves/SplitMerge.h>
+#include <whiskermap/inference/moves/TableBirthDeath.h>
+#include <whiskermap/inference/moves/TableRefit.h>
+
+#include "MoveBoards.h"
+
+#include <algorithm>
+
+using namespace whiskermap;
+using inference::moves::Proposal;
+using model::Id;
+using model::NONE;
+using test::MoveBoard;
+
+namespace
+{
+constexpr uint64_t BOARDS = 60;
+
+/** Runs `propose` on b's board, keeps the move, and checks logTarget against logJoint. */
+template <class M, class Propose>
+Proposal applied(MoveBoard& b, M& move, Propose&& propose)
+{
+	const double before = model::logJoint(b.bb);
+	const Proposal p = propose();
+	move.finish(b.ctx, true);
+	EXPECT_NEAR(model::logJoint(b.bb) - before, p.logTarget, 1e-7);
+	return p;
+}
+
+/** The leg added since `before` (the ids live then). */
+Id newLeg(const MoveBoard& b, const std::vector<Id>& before)
+{
+	for (const Id l : b.legs())
+		if (std::find(before.begin(), before.end(), l) == before.end()) return l;
+	return NONE;
+}
+}  // namespace
+
+TEST(MoveRoundTrip, FreeLegBirthThenDeath)
+{
+	for (uint64_t seed = 0; seed < BOARDS; seed++)
+	{
+		MoveBoard b(seed, seed % 2);
+		const size_t s = b.pick(b.bb.shapelets().size());
+		b.bb.setShapeletParent(s, NONE);  // priming: a shapelet without a leg
+		const model::Blackboard before = b.bb;
+		inference::moves::LegBirthDeath move;
+		const Proposal birth = applied(b, move, [&] { return move.birthFor(b.ctx, s); });
+		const Id born = b.bb.shapeletParent(s);
+		const Proposal death = applied(b, move, [&] { return *move.death(b.ctx, born); });
+		ASSERT_TRUE(std::isfinite(death.logReverse)) << seed;
+		test::expectReverses(birth, death, "birth, death");
+		test::expectSameBoard(before, b.bb, "birth, death");
+	}
+}
+
+TEST(MoveRoundTrip, CornerLegBirthThenDeath)
+{
+	int tried = 0;
+	for (uint64_t seed = 0; seed < BOARDS; seed++)
+	{
+		MoveBoard b(seed, true);
+		const model::Blackboard before = b.bb;
+		const std::vector<Id> legs = b.legs();
+		inference::moves::LegBirthDeath move;
+		const auto birth = move.birthAtCorner(b.ctx, b.table);
+		if (!birth) continue;
+		move.finish(b.ctx, true);
+		const Proposal death = applied(b, move, [&] { return *move.death(b.ctx, newLeg(b, legs)); });
+		test::expectReverses(*birth, death, "corner birth, death");
+		test::expectSameBoard(before, b.bb, "corner birth, death");
+		tried++;
+	}
+	EXPECT_GE(tried, static_cast<int>(BOARDS) / 2);
+}
+
+TEST(MoveRoundTrip, SplitThenMerge)
+{
+	int tried = 0;
+	for (uint64_t seed = 0; seed < 4 * BOARDS; seed++)
+	{
+		MoveBoard b(seed, true);
+		Id from = NONE;
+		for (const Id l : b.legs())
+			if (b.bb.shapeletsOf(l).size() >= 2) from = l;
+		if (from == NONE) continue;
+		const auto& own = b.bb.shapeletsOf(from);
+		const auto s = static_cast<size_t>(own[b.pick(own.size())]);
+		if (seed % 2)
+		{
+			model::Leg off = b.bb.leg(from);  // 2 mm off its fit: the merge cannot put it back
+			off.x += 0.002;
+			b.bb.setLeg(from, off);
+		}
+		const model::Blackboard before = b.bb;
+		inference::moves::SplitMerge move;
+		const Proposal split = applied(b, move, [&] { return move.split(b.ctx, s); });
+		EXPECT_EQ(std::isfinite(split.logReverse), seed % 2 == 0) << seed;
+		if (seed % 2) continue;  // no reverse claimed
+		const Id other = b.bb.shapeletParent(s);
+		const double afterSplit = model::logJoint(b.bb);
+		const auto merge = move.merge(b.ctx, from, other);
+		ASSERT_TRUE(merge.has_value()) << seed;
+		move.finish(b.ctx, true);
+		EXPECT_NEAR(model::logJoint(b.bb) - afterSplit, merge->logTarget, 1e-7);
+		test::expectReverses(split, *merge, "split, merge");
+		test::expectSameBoard(before, b.bb, "split, merge");
+		tried++;
+	}
+	EXPECT_GE(tried, 10);
+}
+
+// The reverse is drawn among candidates: seeds are tried until it draws the old parent.
+TEST(MoveRoundTrip, ReparentThenBack)
+{
+	int tried = 0;
+	for (uint64_t seed = 0; seed < BOARDS; seed++)
+	{
+		MoveBoard b(seed, true);
+		model::Table shifted = b.bb.table(b.table);
+		shifted.x += 0.01;
+		b.bb.addTable(shifted);  // a second table whose corners are within the gate of the legs
+		const Id l = b.legs()[b.pick(b.legs().size())];
+		const model::Blackboard before = b.bb;
+		inference::moves::LegReparent move;
+		const Proposal forward = applied(b, move, [&] { return *move.propose(b.ctx, l); });
+		const model::Blackboard after = b.bb;
+		bool back = false;
+		for (uint64_t r = 0; r < 50 && !back; r++)
+		{
+			b.bb = after;
+			b.rng.seed(r);
+			const Proposal reverse = applied(b, move, [&] { return *move.propose(b.ctx, l); });
+			back = b.bb.leg(l).parent == before.leg(l).parent;
+			if (back) test::expectReverses(forward, reverse, "reparent, back");
+		}
+		ASSERT_TRUE(back) << seed;
+		test::expectSameBoard(before, b.bb, "reparent, back");
+		tried++;
+	}
+	EXPECT_EQ(tried, static_cast<int>(BOARDS));
+}
+
+// Table death declares no reverse density (doc/sampler.md), so only the board and the change
+// of logJoint are compared.
+TEST(MoveRoundTrip, TableBirthThenDeath)
+{
+	int tried = 0;
+	for (uint64_t seed = 0; seed < BOARDS; seed++)
+	{
+		MoveBoard b(seed, false);
+		const model::Blackboard before = b.bb;
+		inference::moves::TableBirthDeath move(b.P);
+		const Id l = b.legs()[b.pick(b.legs().size())];
+		const Proposal birth = applied(b, move, [&] { return move.birth(b.ctx, l); });
+		ASSERT_TRUE(std::isfinite(birth.logReverse)) << seed;  // free legs, nothing removed
+		const Proposal death = applied(b, move, [&] { return move.death(b.ctx, b.bb.leg(l).parent); });
+		EXPECT_NEAR(birth.logTarget + death.logTarget, 0, 1e-9);
+		test::expectSameBoard(before, b.bb, "table birth, death");
+		tried++;
+	}
+	EXPECT_EQ(tried, static_cast<int>(BOARDS));
+}
+
+// Every move's logTarget is the exact change of logJoint (applied() checks it), for the moves
+// without a round trip too: links (with their refit and drop), leg and table refits. (Births,
+// deaths, splits, merges, reparents and table births are checked in the round trips above.)
+TEST(MoveRoundTrip, LogTargetIsTheChangeOfLogJoint)
+{
+	int links = 0, legRefits = 0, tableRefits = 0;
+	for (uint64_t seed = 0; seed < BOARDS; seed++)
+	{
+		MoveBoard b(seed, seed % 2);
+		const std::vector<Id> legs = b.legs();
+		const auto s = b.pick(b.bb.shapelets().size());
+		const Id to = legs[b.pick(legs.size())];
+		if (b.bb.shapeletParent(s) != to)
+		{
+			inference::moves::ShapeletLink move;
+			applied(b, move, [&] { return move.link(b.ctx, s, to, inference::Move::Child); });
+			links++;
+		}
+		for (int i = 0; i < 2; i++)  // the second time at the fit: a zero change
+		{
+			inference::moves::LegRefit move;
+			const Id l = b.legs()[0];
+			if (!move.propose(b.ctx, l)) continue;
+			move.finish(b.ctx, false);
+			applied(b, move, [&] { return *move.propose(b.ctx, l); });
+			legRefits++;
+		}
+		inference::moves::TableRefit move;
+		if (b.table == NONE || !move.propose(b.ctx, b.table)) continue;
+		move.finish(b.ctx, false);
+		applied(b, move, [&] { return *move.propose(b.ctx, b.table); });
+		tableRefits++;
+	}
+	EXPECT_GE(links, 10);
+	EXPECT_GE(legRefits, 10);
+	EXPECT_GE(tableRefits, 5);
+}
