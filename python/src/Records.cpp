@@ -24,7 +24,7 @@ const std::vector<Field>& fieldsOf<obs::Shapelet>()
 	using S = obs::Shapelet;
 	static const std::vector<Field> f{
 		WM_FIELD(S, x, "f8"), WM_FIELD(S, y, "f8"), WM_FIELD(S, normal, "f8"), WM_FIELD(S, texture, "f8"),
-		WM_FIELD(S, whisker, "i4")};
+		WM_FIELD(S, whisker, "i4"), WM_FIELD(S, shaft_x, "f8"), WM_FIELD(S, shaft_y, "f8")};
 	return f;
 }
 

@@ -45,6 +45,9 @@ def test_shapelets_are_the_touched_whiskers_in_the_world_frame(rawlog):
     # The same sweep from a pose moved by (1, 2) moves its contacts by (1, 2).
     moved = sweep.shapelets((pose[0] + 1, pose[1] + 2, pose[2]))
     assert np.allclose(moved["x"] - shapelets["x"], 1) and np.allclose(moved["y"] - shapelets["y"], 2)
+    # Each contact lies on its whisker's shaft: a unit vector pointing from the pivot to it.
+    assert np.allclose(np.hypot(shapelets["shaft_x"], shapelets["shaft_y"]), 1)
+    assert np.allclose(moved["shaft_x"], shapelets["shaft_x"]) and np.allclose(moved["shaft_y"], shapelets["shaft_y"])
 
 
 def test_rewriting_the_sweeps_gives_the_same_bytes(rawlog, dataset, tmp_path):

@@ -222,6 +222,11 @@ TEST(CHierarchicalObjectMap, SerializationRoundTripThroughCMultiMetricMap)
 	EXPECT_GT(b->lastingMap().state().legCount(), 50u);
 	ASSERT_EQ(b->poseRecords().size(), m.map->poseRecords().size());
 	EXPECT_EQ(b->shapelets().size(), m.map->shapelets().size());
+	ASSERT_FALSE(b->shapelets().empty());
+	EXPECT_TRUE(m.map->shapelets().back().hasShaft());  // the shafts survive (version 2)
+	EXPECT_EQ(b->shapelets().back().shaft_x, m.map->shapelets().back().shaft_x);
+	EXPECT_EQ(b->shapelets().back().shaft_y, m.map->shapelets().back().shaft_y);
+	EXPECT_EQ(b->modelParams, m.map->modelParams);
 	EXPECT_EQ(b->proposed(), m.map->proposed());
 	EXPECT_EQ(b->asString(), m.map->asString());
 	// The reloaded map scores sweeps exactly as the original.
@@ -253,11 +258,13 @@ TEST(CHierarchicalObjectMap, PerPoseSerializationRoundTrip)
 }
 
 // Lasting mode: a copy (as a particle filter makes) and a deserialized map continue exactly
-// as the original; another seed gives another state.
-TEST(CHierarchicalObjectMap, LastingCopiesAndReloadsContinueIdentically)
+// as the original; another seed gives another state. With shaft noise the contacts' shafts
+// must survive too (a reload that lost them would score them isotropically).
+static void expectLastingCopiesContinue(bool shaftNoise)
 {
 	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/paper_arena/default.rawlog");
 	CHierarchicalObjectMap a, c;
+	a.modelParams.shaft_noise = c.modelParams.shaft_noise = shaftNoise;
 	c.insertionOptions.seed = 99;
 	for (size_t i = 0; i < 120; i++)
 	{
@@ -283,6 +290,12 @@ TEST(CHierarchicalObjectMap, LastingCopiesAndReloadsContinueIdentically)
 	EXPECT_NE(fingerprint(c), fingerprint(a));
 	a.clear();
 	EXPECT_TRUE(a.isEmpty());
+}
+
+TEST(CHierarchicalObjectMap, LastingCopiesAndReloadsContinueIdentically) { expectLastingCopiesContinue(false); }
+TEST(CHierarchicalObjectMap, LastingCopiesAndReloadsContinueIdenticallyWithShaftNoise)
+{
+	expectLastingCopiesContinue(true);
 }
 
 TEST(CHierarchicalObjectMap, PerPoseSameSeedSameMapAndCopiesContinueIdentically)

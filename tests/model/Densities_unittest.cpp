@@ -146,3 +146,32 @@ TEST(Densities, ShapeletGivenLegByHand)
 	l.theta = 0;
 	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - 0.25, 1e-9);
 }
+
+// Shaft noise (doc/model.md): a contact's distance across a face with outward normal u has
+// variance v = sigma_r^2 (u . shaft)^2 + sigma_across^2, and its density gains
+// log(sigma_r / sqrt(v)); without a known shaft, eq. 7 as written.
+TEST(Densities, ShapeletGivenLegWithShaftNoiseByHand)
+{
+	ModelParams p = handParams();
+	p.shaft_noise = true;
+	p.sigma_across = 0.002;
+	const Leg l{0, 0, 0, 0.1, 0.1, 0.5, NONE, -1};
+	const auto gain = [](double v) { return 0.5 * std::log(1e-4 / v); };
+	whiskermap::obs::Shapelet s{0.07, 0.0, 0.0, 0.5, 0};  // 2 cm outside the +x face
+	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - 4.0, 1e-9);  // no shaft: (0.02 / 0.01)^2
+	s.shaft_x = 1;  // across the face: v = 1e-4 + 4e-6
+	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - 4e-4 / 1.04e-4 + gain(1.04e-4), 1e-9);
+	s.shaft_x = 0.5, s.shaft_y = std::sqrt(0.75);  // 60 degrees off the normal: 2.5e-5 + 4e-6
+	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - 4e-4 / 2.9e-5 + gain(2.9e-5), 1e-9);
+	s.shaft_x = 0, s.shaft_y = 1;  // along the face: sigma_across alone, (0.02 / 0.002)^2
+	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - 100.0 + gain(4e-6), 1e-9);
+	EXPECT_NEAR(contactVariance(s, 0, 1, p), 1.04e-4, 1e-15);
+	// Past the +y end of the +x face by 1 cm, shaft along x: the excess along y has variance
+	// sigma_across^2: (0.01 / 0.002)^2 = 25 (the +y face, 1 cm off across the shaft, has the
+	// normal a quarter turn off).
+	s = {0.05, 0.06, 0.0, 0.5, 0, 1, 0};
+	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - 25.0 + gain(1.04e-4), 1e-9);
+	p.shaft_noise = false;  // the paper's eq. 7 ignores the shaft: (0.01 / 0.01)^2
+	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - 1.0, 1e-9);
+	EXPECT_NEAR(contactVariance(s, 1, 0, p), 1e-4, 1e-15);
+}

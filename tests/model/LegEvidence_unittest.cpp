@@ -28,6 +28,8 @@ std::vector<Shapelet> contactsOn(const Leg& l, int n)
 		s.y = l.y + depth * std::sin(a) + along * std::cos(a);
 		s.normal = a + u(-0.2, 0.2);
 		s.texture = u(0.4, 0.9);
+		const double shaft = u(-M_PI, M_PI);  // used by shaft noise only
+		s.shaft_x = std::cos(shaft), s.shaft_y = std::sin(shaft);
 		out.push_back(s);
 	}
 	return out;
@@ -55,6 +57,30 @@ TEST(LegEvidence, EqualsEq7SummedOverItsContacts)
 				m.x += u(-0.003, 0.003), m.y += u(-0.003, 0.003), m.texture = u(0, 1);
 				m.theta += u(-0.1, 0.1) + static_cast<int>(rng() % 4) * M_PI_2;  // a square: same leg
 			}
+			double sum = 0;
+			for (const auto& s : contacts) sum += logShapeletGivenLeg(s, m, p);
+			EXPECT_NEAR(e.logLikelihood(m, p), sum, 1e-7 * std::abs(sum)) << "trial " << trial << " pose " << k;
+		}
+	}
+}
+
+// With shaft noise each contact weighs by its own variance across its face: still exact at
+// poses that keep every contact on its face and the faces' directions (shifts, quarter turns).
+TEST(LegEvidence, EqualsEq7WithShaftNoise)
+{
+	ModelParams p;
+	p.shaft_noise = true;
+	for (int trial = 0; trial < 200; trial++)
+	{
+		const Leg l{u(-50, 50), u(-50, 50), u(-M_PI, M_PI), p.leg_width, p.leg_width, 0.7, NONE, -1};
+		const auto contacts = contactsOn(l, 1 + static_cast<int>(rng() % 12));
+		LegEvidence e;
+		for (const auto& s : contacts) e.add(s, l, p);
+		for (int k = 0; k < 5; k++)
+		{
+			Leg m = l;
+			m.x += u(-0.001, 0.001), m.y += u(-0.001, 0.001), m.texture = u(0, 1);
+			m.theta += static_cast<int>(rng() % 4) * M_PI_2;
 			double sum = 0;
 			for (const auto& s : contacts) sum += logShapeletGivenLeg(s, m, p);
 			EXPECT_NEAR(e.logLikelihood(m, p), sum, 1e-7 * std::abs(sum)) << "trial " << trial << " pose " << k;

@@ -25,6 +25,8 @@ TEST(ModelParams, ShippedConfigEqualsBuiltInDefaults)
 	EXPECT_EQ(f.sigma_theta, d.sigma_theta);
 	EXPECT_EQ(f.sigma_w, d.sigma_w);
 	EXPECT_EQ(f.sigma_tau, d.sigma_tau);
+	EXPECT_EQ(f.shaft_noise, d.shaft_noise);
+	EXPECT_EQ(f.sigma_across, d.sigma_across);
 	EXPECT_EQ(f.c_T, d.c_T);
 	EXPECT_EQ(f.c_L, d.c_L);
 	EXPECT_EQ(f.c_S, d.c_S);
@@ -69,4 +71,10 @@ TEST(ModelParams, UnknownMissingAndBadKeysFail)
 	EXPECT_THROW(load(with("epsilon=0.01", "epsilon=2")), core::Error);  // out of range
 	EXPECT_THROW(load(with("delta=0.01\n", "")), core::Error);  // missing
 	EXPECT_THROW(load(with("leg_width=0.05", "leg_width=0.7")), core::Error);  // wider than the table
+	// Shaft noise: optional (the paper's eq. 7 without), strict when given.
+	EXPECT_FALSE(load(text).shaft_noise);
+	EXPECT_TRUE(load(text + "shaft_noise=true\nsigma_across=0.003\n").shaft_noise);
+	EXPECT_EQ(load(text + "sigma_across=0.003\n").sigma_across, 0.003);
+	EXPECT_THROW(load(text + "shaft_noise=maybe\n"), core::Error);
+	EXPECT_THROW(load(text + "sigma_across=0\n"), core::Error);
 }

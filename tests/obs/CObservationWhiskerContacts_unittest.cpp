@@ -177,6 +177,8 @@ TEST(CObservationWhiskerContacts, ShapeletsInWorldFrame)
 	EXPECT_NEAR(s[0].normal, 0, 1e-12);
 	EXPECT_DOUBLE_EQ(s[0].texture, 0.7);
 	EXPECT_EQ(s[0].whisker, 0);
+	EXPECT_NEAR(s[0].shaft_x, -1, 1e-12);  // the shaft points along world -x
+	EXPECT_NEAR(s[0].shaft_y, 0, 1e-12);
 	EXPECT_EQ(o.contactCount(), 1u);
 }
 

@@ -16,6 +16,24 @@ namespace
 double sq(double v) { return v * v; }
 }  // namespace
 
+void addCentreEquations(
+	const model::ModelParams& p, const obs::Shapelet* const* s, size_t n, double theta,
+	const model::LegEvidence* evidence, CentreEquations& eq)
+{
+	const double w = p.leg_width;
+	for (size_t i = 0; i < n; i++)
+	{
+		const double f = s[i]->normal - core::angleDiff(s[i]->normal, theta, M_PI_2);
+		const double ux = std::cos(f), uy = std::sin(f);
+		const double d = ux * s[i]->x + uy * s[i]->y - w / 2;
+		// weight in units of 1/sigma_r^2: 1, or more across a shaft (shaft noise, eq. 7)
+		const double k = p.shaft_noise ? sq(p.sigma_r) / model::contactVariance(*s[i], ux, uy, p) : 1;
+		eq.a11 += k * ux * ux, eq.a12 += k * ux * uy, eq.a22 += k * uy * uy, eq.b1 += k * ux * d, eq.b2 += k * uy * d;
+	}
+	if (evidence && !evidence->empty())
+		evidence->addCentreEquations(theta, w, p, eq.a11, eq.a12, eq.a22, eq.b1, eq.b2);
+}
+
 model::Leg fitLeg(
 	const model::ModelParams& p, const obs::Shapelet* const* s, size_t n, const model::Table* t, double qx,
 	double qy, double pull, const model::LegEvidence* evidence)
@@ -41,18 +59,9 @@ model::Leg fitLeg(
 		if (cost < bestCost) bestCost = cost, theta = th;
 	}
 	// Centre: each contact on the line of its face (outward normal u), plus the pull.
-	constexpr size_t MAX_CONTACTS = 64;
-	double ux[MAX_CONTACTS], uy[MAX_CONTACTS];
-	n = std::min(n, MAX_CONTACTS);
-	double a11 = pull, a12 = 0, a22 = pull, b1 = pull * qx, b2 = pull * qy;
-	for (size_t i = 0; i < n; i++)
-	{
-		const double f = s[i]->normal - core::angleDiff(s[i]->normal, theta, M_PI_2);
-		ux[i] = std::cos(f), uy[i] = std::sin(f);
-		const double d = ux[i] * s[i]->x + uy[i] * s[i]->y - w / 2;
-		a11 += ux[i] * ux[i], a12 += ux[i] * uy[i], a22 += uy[i] * uy[i], b1 += ux[i] * d, b2 += uy[i] * d;
-	}
-	if (folded) evidence->addCentreEquations(theta, w, p, a11, a12, a22, b1, b2);
+	CentreEquations eq{pull, 0, pull, pull * qx, pull * qy};
+	addCentreEquations(p, s, n, theta, evidence, eq);
+	const auto& [a11, a12, a22, b1, b2] = eq;
 	const double det = a11 * a22 - a12 * a12;
 	double px = (a22 * b1 - a12 * b2) / det, py = (a11 * b2 - a12 * b1) / det;
 	// Contacts on the faces of one axis only leave the leg free along those faces (but for the

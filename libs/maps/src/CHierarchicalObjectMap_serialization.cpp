@@ -1,5 +1,6 @@
 // CHierarchicalObjectMap: versioned MRPT serialization (doc/map-plugin.md). Version 0 (no
-// lasting map) still loads, as a per-pose map.
+// lasting map) still loads, as a per-pose map; version 1 (no shaft directions) as contacts
+// without a known shaft.
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 
@@ -10,13 +11,17 @@ namespace whiskermap::maps
 namespace
 {
 void write(CArchive& a, const world::Table& t) { a << t.x << t.y << t.yaw << t.length << t.width << t.leg_width << t.texture; }
-void read(CArchive& a, world::Table& t) { a >> t.x >> t.y >> t.yaw >> t.length >> t.width >> t.leg_width >> t.texture; }
-void write(CArchive& a, const obs::Shapelet& s) { a << s.x << s.y << s.normal << s.texture << static_cast<int32_t>(s.whisker); }
-void read(CArchive& a, obs::Shapelet& s)
+void read(CArchive& a, world::Table& t, uint8_t) { a >> t.x >> t.y >> t.yaw >> t.length >> t.width >> t.leg_width >> t.texture; }
+void write(CArchive& a, const obs::Shapelet& s)
+{
+	a << s.x << s.y << s.normal << s.texture << static_cast<int32_t>(s.whisker) << s.shaft_x << s.shaft_y;
+}
+void read(CArchive& a, obs::Shapelet& s, uint8_t version)
 {
 	int32_t w;
 	a >> s.x >> s.y >> s.normal >> s.texture >> w;
 	s.whisker = w;
+	if (version >= 2) a >> s.shaft_x >> s.shaft_y;
 }
 template <class T>
 void writeVec(CArchive& a, const std::vector<T>& v)
@@ -25,10 +30,10 @@ void writeVec(CArchive& a, const std::vector<T>& v)
 	for (const auto& x : v) write(a, x);
 }
 template <class T>
-void readVec(CArchive& a, std::vector<T>& v)
+void readVec(CArchive& a, std::vector<T>& v, uint8_t version)
 {
 	v.resize(a.ReadAs<uint32_t>());
-	for (auto& x : v) read(a, x);
+	for (auto& x : v) read(a, x, version);
 }
 
 /** The lasting state, ids renumbered densely in ascending order. */
@@ -68,7 +73,7 @@ void writeLasting(CArchive& out, const model::LastingState& s)
 	out << s.nextSeq();
 }
 
-void readLasting(CArchive& in, model::LastingState& s)
+void readLasting(CArchive& in, model::LastingState& s, uint8_t version)
 {
 	std::vector<model::Table> tables(in.ReadAs<uint32_t>());
 	std::vector<double> existence(tables.size());
@@ -87,8 +92,8 @@ void readLasting(CArchive& in, model::LastingState& s)
 		if (parent < -1 || parent >= static_cast<int32_t>(tables.size()))
 			THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (leg parent out of range)");
 		g.parent = parent;
-		std::array<double, model::LegEvidence::STATS> stats;
-		for (double& v : stats) in >> v;
+		std::array<double, model::LegEvidence::STATS> stats{};
+		for (size_t k = 0; k < (version >= 2 ? stats.size() : 33); k++) in >> stats[k];
 		uint32_t count;
 		in >> count;
 		evidence[i] = model::LegEvidence::fromStats(stats, count);
@@ -96,7 +101,7 @@ void readLasting(CArchive& in, model::LastingState& s)
 	std::vector<model::LastingState::Contact> contacts(in.ReadAs<uint32_t>());
 	for (auto& k : contacts)
 	{
-		read(in, k.shapelet);
+		read(in, k.shapelet, version);
 		int32_t leg;
 		in >> leg >> k.seq;
 		if (leg < -1 || leg >= static_cast<int32_t>(legs.size()))
@@ -109,7 +114,7 @@ void readLasting(CArchive& in, model::LastingState& s)
 }
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 1; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 2; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -149,6 +154,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	out << l.visit_radius << l.contacts_per_leg << l.unexplained_per_spot << likelihoodOptions.min_existence;
 	for (const auto& o : objects()) out << o.contacts << o.legMask;
 	writeLasting(out, m_lasting.state());
+	// Version 2: shaft noise (shapelets carry their shafts above).
+	out << m.shaft_noise << m.sigma_across;
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -157,6 +164,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 	{
 		case 0:
 		case 1:
+		case 2:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -176,17 +184,17 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 			for (auto& p : m_poses)
 			{
 				in >> p.pose >> p.logPosterior >> p.shapelets;
-				readVec(in, p.tables);
+				readVec(in, p.tables, version);
 			}
 			std::vector<TMapObject> objs(in.ReadAs<uint32_t>());
 			for (auto& o : objs)
 			{
-				read(in, o.table);
+				read(in, o.table, version);
 				in >> o.support >> o.evidence >> o.sum_x >> o.sum_y >> o.sum_cos2 >> o.sum_sin2;
 			}
-			readVec(in, m_shapelets);
+			readVec(in, m_shapelets, version);
 			std::vector<obs::Shapelet> memory;
-			readVec(in, memory);
+			readVec(in, memory, version);
 			m_memory = inference::ShapeletMemory(insertionOptions.memory_size);
 			m_memory.add(memory);
 			for (size_t k = 0; k < inference::MOVE_COUNT; k++) in >> m_proposed[k] >> m_accepted[k];
@@ -199,8 +207,11 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 				auto& l = insertionOptions.lasting;
 				in >> l.visit_radius >> l.contacts_per_leg >> l.unexplained_per_spot >> likelihoodOptions.min_existence;
 				for (auto& o : objs) in >> o.contacts >> o.legMask;
-				readLasting(in, m_lasting.state());
+				readLasting(in, m_lasting.state(), version);
 			}
+			m.shaft_noise = false;  // versions 0 and 1 knew only the paper's eq. 7
+			m.sigma_across = model::ModelParams().sigma_across;
+			if (version >= 2) in >> m.shaft_noise >> m.sigma_across;
 			m_consolidator.setObjects(std::move(objs));
 			m_consolidator.setOptions(c);
 		}

@@ -81,6 +81,12 @@ LegFit logLegGivenTable(const Leg& l, const Table& t, const ModelParams& p)
 	return fit;
 }
 
+double contactVariance(const obs::Shapelet& s, double ux, double uy, const ModelParams& p)
+{
+	if (!p.shaft_noise || !s.hasShaft()) return sq(p.sigma_r);
+	return sq(p.sigma_r * (ux * s.shaft_x + uy * s.shaft_y)) + sq(p.sigma_across);  // shaft noise
+}
+
 double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelParams& p)
 {
 	// eq. 7 with the face that explains the contact best: distance to that face (a segment)
@@ -90,13 +96,29 @@ double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelPara
 	const double dx = s.x - l.x, dy = s.y - l.y;
 	const double lx = c * dx + sn * dy, ly = -sn * dx + c * dy, hx = l.wx / 2, hy = l.wy / 2;
 	const double ex = std::max(std::abs(lx) - hx, 0.0), ey = std::max(std::abs(ly) - hy, 0.0);
-	const double faceDistance2[4] = {sq(lx - hx) + sq(ey), sq(ly - hy) + sq(ex), sq(lx + hx) + sq(ey), sq(ly + hy) + sq(ex)};
+	double cost[4];  // eq. 7's distance term per face
+	if (p.shaft_noise && s.hasShaft())
+	{
+		// Variances along the leg's x and y axes (the shaft in the leg frame): each face's
+		// distance across it, and its excess past the face's ends along it.
+		// The across-face distance is a 1-D Gaussian: its density is sigma_r / sigma_across-face
+		// times the paper's (the log of that ratio is a gain, nx for faces 0, 2 and ny for 1, 3).
+		const double vx = contactVariance(s, c, sn, p), vy = contactVariance(s, -sn, c, p);
+		const double nx = 0.5 * std::log(sq(p.sigma_r) / vx), ny = 0.5 * std::log(sq(p.sigma_r) / vy);
+		cost[0] = sq(lx - hx) / vx + sq(ey) / vy - nx, cost[1] = sq(ly - hy) / vy + sq(ex) / vx - ny;
+		cost[2] = sq(lx + hx) / vx + sq(ey) / vy - nx, cost[3] = sq(ly + hy) / vy + sq(ex) / vx - ny;
+	}
+	else
+	{
+		const double d2[4] = {sq(lx - hx) + sq(ey), sq(ly - hy) + sq(ex), sq(lx + hx) + sq(ey), sq(ly + hy) + sq(ex)};
+		for (int k = 0; k < 4; k++) cost[k] = d2[k] / sq(p.sigma_r);
+	}
 	double a = core::wrapToPi(s.normal - l.theta);  // normal against face 0's
 	double best = std::numeric_limits<double>::infinity();
 	for (int k = 0; k < 4; k++, a -= M_PI_2)
 	{
 		const double ak = a <= -M_PI ? a + 2 * M_PI : a;
-		best = std::min(best, faceDistance2[k] / sq(p.sigma_r) + sq(ak / p.sigma_theta));
+		best = std::min(best, cost[k] + sq(ak / p.sigma_theta));
 	}
 	return core::cachedLog(p.alpha_S) - best - sq((l.texture - s.texture) / p.sigma_tau);  // eq. 7
 }

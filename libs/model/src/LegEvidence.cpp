@@ -29,19 +29,23 @@ void LegEvidence::add(const obs::Shapelet& s, const Leg& l, const ModelParams& p
 	// (distance to the face's line and normal against the face's normal), indexed from the
 	// reference yaw. Near a corner of a leg that is still a little off, the face nearest by
 	// position alone can be the wrong one; the normal then tells.
-	const double wr = 1 / sq(p.sigma_r), wa = 1 / sq(p.sigma_theta), wt = 1 / sq(p.sigma_tau);
+	// With shaft noise (eq. 7's variance per face: contactVariance) each face weighs the
+	// contact by its own 1/variance.
+	const double wa = 1 / sq(p.sigma_theta), wt = 1 / sq(p.sigma_tau);
 	double d = 0;
 	int n = 0;
 	offset(l.theta, d, n);
 	int k = 0;
-	double best = std::numeric_limits<double>::infinity();
+	double best = std::numeric_limits<double>::infinity(), wr = 0;
 	for (int f = 0; f < 4; f++)
 	{
 		const double a = m_theta + d + f * M_PI_2, ux = std::cos(a), uy = std::sin(a);
 		const double r = ux * (s.x - l.x) + uy * (s.y - l.y) - halfExtent(l, f - n);
-		const double cost = wr * r * r + wa * sq(core::angleDiff(s.normal, a, 2 * M_PI));
-		if (cost < best) best = cost, k = f;
+		const double w = 1 / contactVariance(s, ux, uy, p), norm = 0.5 * std::log(sq(p.sigma_r) * w);
+		const double cost = w * r * r - norm + wa * sq(core::angleDiff(s.normal, a, 2 * M_PI));
+		if (cost < best) best = cost, k = f, wr = w;
 	}
+	if (p.shaft_noise) m_norm += 0.5 * std::log(sq(p.sigma_r) * wr);
 	Face& f = m_face[k];
 	const double ex = s.x - m_ax, ey = s.y - m_ay;
 	f.w += wr, f.sx += wr * ex, f.sy += wr * ey;
@@ -77,6 +81,7 @@ void LegEvidence::merge(const LegEvidence& o)
 	}
 	m_wa += o.m_wa, m_sa += o.m_sa + o.m_wa * d, m_saa += o.m_saa + 2 * d * o.m_sa + o.m_wa * d * d;
 	m_wt += o.m_wt, m_st += o.m_st, m_stt += o.m_stt;
+	m_norm += o.m_norm;
 	m_count += o.m_count;
 }
 
@@ -100,7 +105,7 @@ double LegEvidence::logLikelihood(const Leg& l, const ModelParams& p) const
 	}
 	delta += m_saa - 2 * d * m_sa + m_wa * d * d;  // normal vs face normal
 	delta += m_stt - 2 * l.texture * m_st + m_wt * l.texture * l.texture;  // texture
-	return m_count * core::cachedLog(p.alpha_S) - delta;  // eq. 7 summed
+	return m_count * core::cachedLog(p.alpha_S) + m_norm - delta;  // eq. 7 summed
 }
 
 void LegEvidence::addCentreEquations(
@@ -152,6 +157,7 @@ std::array<double, LegEvidence::STATS> LegEvidence::stats() const
 	v[i++] = m_ax, v[i++] = m_ay, v[i++] = m_theta;
 	for (const Face& f : m_face) v[i++] = f.w, v[i++] = f.sx, v[i++] = f.sy, v[i++] = f.sxx, v[i++] = f.sxy, v[i++] = f.syy;
 	v[i++] = m_wa, v[i++] = m_sa, v[i++] = m_saa, v[i++] = m_wt, v[i++] = m_st, v[i++] = m_stt;
+	v[i++] = m_norm;
 	return v;
 }
 
@@ -162,6 +168,7 @@ LegEvidence LegEvidence::fromStats(const std::array<double, STATS>& v, uint32_t 
 	e.m_ax = v[i++], e.m_ay = v[i++], e.m_theta = v[i++];
 	for (Face& f : e.m_face) f.w = v[i++], f.sx = v[i++], f.sy = v[i++], f.sxx = v[i++], f.sxy = v[i++], f.syy = v[i++];
 	e.m_wa = v[i++], e.m_sa = v[i++], e.m_saa = v[i++], e.m_wt = v[i++], e.m_st = v[i++], e.m_stt = v[i++];
+	e.m_norm = v[i++];
 	e.m_count = count;
 	return e;
 }

@@ -139,9 +139,10 @@ std::vector<Shapelet> CObservationWhiskerContacts::toShapelets(
 		sensorInWorld.composePoint(
 			w.mount_x + w.r * std::cos(w.angle), w.mount_y + w.r * std::sin(w.angle), 0.0, gx, gy,
 			gz);
+		const double shaft = sensorInWorld.yaw() + w.angle;
 		out.push_back(Shapelet{
 			gx, gy, whiskermap::core::wrapToPi(sensorInWorld.yaw() + w.normal), w.texture,
-			static_cast<int>(i)});
+			static_cast<int>(i), std::cos(shaft), std::sin(shaft)});
 	}
 	return out;
 }

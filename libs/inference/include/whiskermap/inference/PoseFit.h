@@ -13,6 +13,21 @@ namespace whiskermap::inference
 /** Closed-form pose fits: minimisers of the quadratic parts of eqs. 6-7. Shared by the exact
  *  oracle (doc/oracle.md) and the sampler's refit and pair-table moves (doc/sampler.md). */
 
+/** The normal equations of a leg centre's least squares, in units of 1/sigma_r^2:
+ *  A = (a11 a12; a12 a22), b = (b1, b2). */
+struct CentreEquations
+{
+	double a11 = 0, a12 = 0, a22 = 0, b1 = 0, b2 = 0;
+};
+
+/** Adds eq. 7's quadratic part in a leg's centre for a leg at yaw `theta` (side leg_width):
+ *  each contact on the line of the face whose outward normal matches its own, weighted by
+ *  sigma_r^2 / its variance across that face (1 without shaft noise), and the folded
+ *  `evidence` (may be null). */
+void addCentreEquations(
+	const model::ModelParams& p, const obs::Shapelet* const* contacts, size_t n, double theta,
+	const model::LegEvidence* evidence, CentreEquations& eq);
+
 /** The square leg (side leg_width) best explaining `n` contacts, each on the face whose
  *  outward normal matches its own, optionally under table `t`: yaw = mean of the normals'
  *  (and the table's) yaws modulo 90 deg; centre = least squares of "each contact on its

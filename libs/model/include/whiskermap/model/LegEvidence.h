@@ -50,8 +50,9 @@ class LegEvidence
 	uint32_t count() const { return m_count; }
 	bool empty() const { return m_count == 0; }
 
-	/** Raw statistics, for serialization: 3 + 4 * 6 + 6 numbers and the count. */
-	static constexpr size_t STATS = 33;
+	/** Raw statistics, for serialization: 3 + 4 * 6 + 6 + 1 numbers and the count (streams
+	 *  of map version 1 hold the first 33: no shaft-noise normaliser). */
+	static constexpr size_t STATS = 34;
 	std::array<double, STATS> stats() const;
 	static LegEvidence fromStats(const std::array<double, STATS>& v, uint32_t count);
 
@@ -71,6 +72,7 @@ class LegEvidence
 	std::array<Face, 4> m_face{};  ///< by face index relative to the reference yaw
 	double m_wa = 0, m_sa = 0, m_saa = 0;  ///< normal error vs face normal at the reference yaw
 	double m_wt = 0, m_st = 0, m_stt = 0;  ///< texture
+	double m_norm = 0;  ///< sum of log(sigma_r / sigma across the face) (shaft noise)
 	uint32_t m_count = 0;
 };
 }  // namespace whiskermap::model

@@ -12,6 +12,11 @@ struct ModelParams
 	double sigma_theta = 0.087;  ///< angle, radians (5 degrees)
 	double sigma_w = 0.01;  ///< leg width, metres
 	double sigma_tau = 0.1;  ///< texture
+	/** Contact noise along the whisker's shaft (doc/model.md, "Shaft noise"): a contact's
+	 *  distance across a face with outward normal u has variance
+	 *  sigma_r^2 (u . shaft)^2 + sigma_across^2 instead of the paper's sigma_r^2 (eq. 7). */
+	bool shaft_noise = false;
+	double sigma_across = 0.002;  ///< position noise across the shaft, metres
 
 	// Priors (eqs. 4, 5, 7, 8, 9): densities, not normalised
 	double c_T = 1e-2;  ///< flat table prior (eq. 4)

@@ -11,5 +11,11 @@ struct Shapelet
 	double normal = 0;  ///< outward surface-normal angle, radians in (-pi, pi] (world frame)
 	double texture = 0;  ///< surface texture in [0, 1]
 	int whisker = -1;  ///< index of the whisker that made it, within its sweep
+	/** Unit direction of the whisker's shaft at the contact, pivot to contact (world frame),
+	 *  or (0, 0) when unknown. The reading's noise lies along it (doc/model.md, eq. 7). */
+	double shaft_x = 0;
+	double shaft_y = 0;
+
+	bool hasShaft() const { return shaft_x != 0 || shaft_y != 0; }
 };
 }  // namespace whiskermap::obs
