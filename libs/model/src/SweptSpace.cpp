@@ -8,9 +8,18 @@ namespace whiskermap::model
 {
 double SweptSpace::penetration(const obs::SweptSector& s, const OrientedRect& r)
 {
-	const double reach = s.radius + std::hypot(r.hx, r.hy);
-	const double dx = s.x - r.cx, dy = s.y - r.cy;
-	if (dx * dx + dy * dy >= reach * reach) return 0;
+	// Every point of the rectangle lies within h of its centre: a sector beyond that reach, or
+	// whose angles miss the centre's by more than asin(h / distance), cannot hold any of them.
+	const double h = std::hypot(r.hx, r.hy), reach = s.radius + h;
+	const double dx = s.x - r.cx, dy = s.y - r.cy, d2 = dx * dx + dy * dy;
+	if (d2 >= reach * reach) return 0;
+	if (d2 > h * h)
+	{
+		const double margin = std::asin(h / std::sqrt(d2));
+		double a = std::atan2(-dy, -dx) - s.from;
+		a -= 2 * M_PI * std::floor(a / (2 * M_PI));  // in [0, 2 pi)
+		if (a > s.span + margin && a < 2 * M_PI - margin) return 0;
+	}
 	const double c = std::cos(r.theta), sn = std::sin(r.theta);
 	const auto at = [&](double u, double v) { return s.depth(r.cx + c * u - sn * v, r.cy + sn * u + c * v); };
 	// The pivot in the rectangle's frame, clamped onto it: the rectangle's point nearest the pivot.
