@@ -235,6 +235,23 @@ TEST(CHierarchicalObjectMap, SerializationRoundTripThroughCMultiMetricMap)
 			  m.map->computeObservationLikelihood(*s.obs, mrpt::poses::CPose3D(s.robotPose)));
 }
 
+// Version 2 stores the optional model keys (shaft noise, free space), not only their defaults.
+TEST(CHierarchicalObjectMap, SerializationKeepsTheOptionalModelKeys)
+{
+	CHierarchicalObjectMap a;
+	a.modelParams.shaft_noise = a.modelParams.free_space = true;
+	a.modelParams.sigma_across = 0.003;
+	a.modelParams.free_space_p_miss = 0.2;
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << a;
+	buf.Seek(0);
+	auto b = std::dynamic_pointer_cast<CHierarchicalObjectMap>(arch.ReadObject());
+	ASSERT_TRUE(b);
+	EXPECT_EQ(b->modelParams, a.modelParams);
+	EXPECT_FALSE(b->modelParams == model::ModelParams());
+}
+
 // The per-pose mode's consolidation survives the round trip too (objects and records).
 TEST(CHierarchicalObjectMap, PerPoseSerializationRoundTrip)
 {

@@ -39,6 +39,9 @@ TEST(ModelParams, ShippedConfigEqualsBuiltInDefaults)
 	EXPECT_EQ(f.leg_width, d.leg_width);
 	EXPECT_EQ(f.texture, d.texture);
 	EXPECT_EQ(f.parent_gate, d.parent_gate);
+	EXPECT_EQ(f.free_space, d.free_space);
+	EXPECT_EQ(f.free_space_p_miss, d.free_space_p_miss);
+	EXPECT_TRUE(f == d);
 }
 
 // eq. 10: uncaused, small things are less likely than large ones: p(S) < p(L) < p(T).
@@ -77,4 +80,15 @@ TEST(ModelParams, UnknownMissingAndBadKeysFail)
 	EXPECT_EQ(load(text + "sigma_across=0.003\n").sigma_across, 0.003);
 	EXPECT_THROW(load(text + "shaft_noise=maybe\n"), core::Error);
 	EXPECT_THROW(load(text + "sigma_across=0\n"), core::Error);
+	// The free-space keys are optional (eq. 21: off, p_miss 0.05), read strictly when given.
+	EXPECT_FALSE(load(text).free_space);
+	EXPECT_EQ(load(text).free_space_p_miss, 0.05);
+	const ModelParams on = load(text + "free_space=true\nfree_space_p_miss=0.2\n");
+	EXPECT_TRUE(on.free_space);
+	EXPECT_EQ(on.free_space_p_miss, 0.2);
+	EXPECT_FALSE(on == load(text));
+	EXPECT_THROW(load(text + "free_space=maybe\n"), core::Error);
+	EXPECT_THROW(load(text + "free_space_p_miss=0\n"), core::Error);  // out of range
+	EXPECT_THROW(load(text + "free_space_p_miss=1.5\n"), core::Error);
+	EXPECT_THROW(load(text + "free_spaces=true\n"), core::Error);  // misspelt
 }

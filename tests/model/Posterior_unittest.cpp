@@ -16,7 +16,11 @@ struct RandomBoards
 	ModelParams p;
 	std::mt19937_64 rng{12345};
 
-	RandomBoards() { p.epsilon = 0.05; }
+	RandomBoards()
+	{
+		p.epsilon = 0.05;
+		p.free_space = true;  // scored wherever a board has swept sectors (eq. 21)
+	}
 	double u(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
 	int pick(int n) { return static_cast<int>(rng() % static_cast<uint64_t>(n)); }
 
@@ -53,8 +57,12 @@ struct RandomBoards
 			const Leg& l = bb.leg(legs[pick(nl)]);
 			shapelets.push_back({l.x + u(-0.05, 0.05), l.y + u(-0.05, 0.05), u(-M_PI, M_PI), u(0, 1), i});
 		}
+		// Two boards in three hold whisker sweeps' free space, with legs and corners in it.
+		std::vector<whiskermap::obs::SweptSector> swept;
+		for (int k = 0; pick(3) > 0 && k < 4; k++)
+			swept.push_back({u(-0.8, 0.8), u(-0.8, 0.8), u(0.2, 0.7), u(-M_PI, M_PI), u(0.3, 2.5)});
 		Blackboard withShapelets(p);
-		withShapelets.reset(shapelets);
+		withShapelets.reset(shapelets, swept);
 		// Re-create the hypotheses on the board holding the shapelets (same ids).
 		for (Id t : tables) withShapelets.addTable(bb.table(t));
 		for (Id l : legs)
@@ -105,7 +113,7 @@ int bruteForceOverlaps(const Blackboard& bb)
 Blackboard withParams(const Blackboard& bb, const ModelParams& p)
 {
 	Blackboard out(p);
-	out.reset(bb.shapelets());
+	out.reset(bb.shapelets(), bb.swept().sectors());
 	for (Id t = 0; t < bb.tableIdBound(); t++) out.addTable(bb.table(t));
 	for (Id l = 0; l < bb.legIdBound(); l++) out.addLeg(bb.leg(l), bb.evidence(l));
 	for (size_t s = 0; s < bb.shapelets().size(); s++) out.setShapeletParent(s, bb.shapeletParent(s));
@@ -139,12 +147,14 @@ TEST(Posterior, HashedOverlapsEqualBruteForce)
 }
 
 // For every present table and leg H of 300 random blackboards (half of them lasting-map
-// problems: folded evidence on legs, context objects around): the local eq. 20 log-odds
+// problems: folded evidence on legs, context objects around; two in three with swept free
+// space, eq. 21, on legs and empty corners): the local eq. 20 log-odds
 // equals logJoint(B) - logJoint(B minus H, H's children unlinked).
 TEST(Posterior, LocalLogOddsEqualsJointDifference)
 {
 	RandomBoards gen;
 	int checked = 0, withTableOverlap = 0, withLegOverlap = 0, withSameCorner = 0, withEvidence = 0;
+	int legsInFreeSpace = 0, cornersInFreeSpace = 0;
 	for (int trial = 0; trial < 300; trial++)
 	{
 		const Blackboard bb = gen.make(trial % 2 == 1);
@@ -157,6 +167,7 @@ TEST(Posterior, LocalLogOddsEqualsJointDifference)
 			for (Id o = 0; o < bb.tableIdBound(); o++)
 				withTableOverlap += o != t && tableRect(bb.table(t), gen.p).overlaps(tableRect(bb.table(o), gen.p));
 			for (int k : bb.cornerCounts(t)) withSameCorner += k > 1;
+			cornersInFreeSpace += bb.swept().logEmptyCorners(bb.table(t), bb.cornerCounts(t), gen.p) < -0.1;
 			checked++;
 		}
 		for (Id l = 0; l < bb.legIdBound(); l++)
@@ -165,6 +176,7 @@ TEST(Posterior, LocalLogOddsEqualsJointDifference)
 			without.removeLeg(l);
 			EXPECT_NEAR(logOddsLeg(bb, l), full - logJoint(without), 1e-8);
 			withEvidence += !bb.evidence(l).empty();
+			legsInFreeSpace += bb.swept().logFactor(legRect(bb.leg(l)), gen.p) < -0.1;
 			for (Id o = 0; o < bb.legIdBound(); o++)
 				withLegOverlap += o != l && legRect(bb.leg(l)).overlaps(legRect(bb.leg(o)));
 			checked++;
@@ -176,6 +188,8 @@ TEST(Posterior, LocalLogOddsEqualsJointDifference)
 	EXPECT_GT(withLegOverlap, 20);
 	EXPECT_GT(withSameCorner, 20);
 	EXPECT_GT(withEvidence, 100);
+	EXPECT_GT(legsInFreeSpace, 100);  // eq. 21 on legs
+	EXPECT_GT(cornersInFreeSpace, 50);  // eq. 21 on the empty corners of tables
 }
 
 // Link gains (used by the sampler's reparent moves) equal joint differences too, for the

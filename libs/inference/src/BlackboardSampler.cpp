@@ -23,7 +23,14 @@ BlackboardSampler::BlackboardSampler(const model::ModelParams& model, const Samp
 StepResult BlackboardSampler::step(
 	const std::vector<obs::Shapelet>& shapelets, uint64_t seed, int snapshotTemperature)
 {
-	m_bb.reset(shapelets);
+	return step(shapelets, {}, seed, snapshotTemperature);
+}
+
+StepResult BlackboardSampler::step(
+	const std::vector<obs::Shapelet>& shapelets, const std::vector<obs::SweptSector>& swept, uint64_t seed,
+	int snapshotTemperature)
+{
+	m_bb.reset(shapelets, swept);
 	StepResult result;
 	run(result, seed, snapshotTemperature);
 	return result;

@@ -156,6 +156,7 @@ void CHierarchicalObjectMap::internal_clear()
 	m_lastLasting = {};
 	m_shapelets.clear();
 	m_memory = inference::ShapeletMemory(insertionOptions.memory_size);
+	m_sweptMemory = inference::SweptMemory(insertionOptions.memory_size);
 	m_proposed.fill(0);
 	m_accepted.fill(0);
 	m_lastStep = {};
@@ -216,6 +217,13 @@ TStepInput CHierarchicalObjectMap::prepareStep(
 	in.memory = m_memory.shapelets();
 	in.seed = splitmix64(insertionOptions.seed ^ splitmix64(m_steps));
 	in.model = modelFor(sweep.noise);
+	if (in.model.free_space)  // and the free space its sweeps swept (eq. 21)
+	{
+		if (m_sweptMemory.capacity() != insertionOptions.memory_size)
+			m_sweptMemory = inference::SweptMemory(insertionOptions.memory_size);
+		m_sweptMemory.add(in.shapelets.size(), sweep.toSweptSectors(pose));
+		in.swept = m_sweptMemory.sectors();
+	}
 	m_steps++;
 	return in;
 }

@@ -154,8 +154,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	out << l.visit_radius << l.contacts_per_leg << l.unexplained_per_spot << likelihoodOptions.min_existence;
 	for (const auto& o : objects()) out << o.contacts << o.legMask;
 	writeLasting(out, m_lasting.state());
-	// Version 2: shaft noise (shapelets carry their shafts above).
-	out << m.shaft_noise << m.sigma_across;
+	// Version 2: shaft noise (shapelets carry their shafts above) and free space.
+	out << m.shaft_noise << m.sigma_across << m.free_space << m.free_space_p_miss;
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -209,9 +209,10 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 				for (auto& o : objs) in >> o.contacts >> o.legMask;
 				readLasting(in, m_lasting.state(), version);
 			}
-			m.shaft_noise = false;  // versions 0 and 1 knew only the paper's eq. 7
-			m.sigma_across = model::ModelParams().sigma_across;
-			if (version >= 2) in >> m.shaft_noise >> m.sigma_across;
+			const model::ModelParams defaults;  // versions 0 and 1 knew only the paper's eqs. 7 and 14
+			m.shaft_noise = defaults.shaft_noise, m.sigma_across = defaults.sigma_across;
+			m.free_space = defaults.free_space, m.free_space_p_miss = defaults.free_space_p_miss;
+			if (version >= 2) in >> m.shaft_noise >> m.sigma_across >> m.free_space >> m.free_space_p_miss;
 			m_consolidator.setObjects(std::move(objs));
 			m_consolidator.setOptions(c);
 		}

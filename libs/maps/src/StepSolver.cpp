@@ -10,6 +10,6 @@ inference::StepResult StepSolver::solve(
 		m_sampler = std::make_unique<inference::BlackboardSampler>(in.model, params);
 		m_model = in.model;
 	}
-	return m_sampler->step(in.memory, in.seed, snapshotTemperature);
+	return m_sampler->step(in.memory, in.swept, in.seed, snapshotTemperature);
 }
 }  // namespace whiskermap::maps

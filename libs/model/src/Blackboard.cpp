@@ -37,6 +37,13 @@ void Blackboard::reset(const std::vector<obs::Shapelet>& shapelets)
 	m_contextTableHash.clear();
 	m_contextLegHash.clear();
 	m_maxLegRadius = 0;
+	m_swept.clear();
+}
+
+void Blackboard::reset(const std::vector<obs::Shapelet>& shapelets, const std::vector<obs::SweptSector>& swept)
+{
+	reset(shapelets);
+	m_swept.assign(swept);
 }
 
 void Blackboard::grow()

@@ -27,6 +27,8 @@ ModelParams ModelParams::fromIni(core::IniSection& sec)
 	p.leg_width = sec.number("leg_width", 1e-4, 10);
 	p.texture = sec.number("texture", 0, 1);
 	p.parent_gate = sec.number("parent_gate", 1e-6, 100);
+	p.free_space = sec.boolean("free_space", p.free_space);
+	p.free_space_p_miss = sec.number("free_space_p_miss", p.free_space_p_miss, 1e-12, 1);
 	sec.finish();
 	if (p.leg_width >= std::min(p.table_length, p.table_width))
 		sec.fail("leg_width", "must be smaller than table_length and table_width");
@@ -37,8 +39,9 @@ bool ModelParams::operator==(const ModelParams& o) const
 {
 	auto tie = [](const ModelParams& p) {
 		return std::tie(
-			p.sigma_r, p.sigma_theta, p.sigma_w, p.sigma_tau, p.shaft_noise, p.sigma_across, p.c_T, p.c_L, p.c_S, p.alpha_L, p.alpha_S,
-			p.epsilon, p.delta, p.table_length, p.table_width, p.leg_width, p.texture, p.parent_gate);
+			p.sigma_r, p.sigma_theta, p.sigma_w, p.sigma_tau, p.shaft_noise, p.sigma_across, p.c_T, p.c_L, p.c_S,
+			p.alpha_L, p.alpha_S, p.epsilon, p.delta, p.table_length, p.table_width, p.leg_width, p.texture,
+			p.parent_gate, p.free_space, p.free_space_p_miss);
 	};
 	return tie(*this) == tie(o);
 }

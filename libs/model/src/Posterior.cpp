@@ -59,6 +59,16 @@ Overlaps overlappingLegs(const Blackboard& bb, Id l)
 	return n;
 }
 
+// The factors a table owns given its children: phi_a, phi_b (eqs. 15, 17) and the free space
+// at its empty corners (eq. 21).
+double tableFactors(const Blackboard& bb, Id t, const CornerCounts& counts)
+{
+	return logTableConstraints(counts, bb.params()) + bb.swept().logEmptyCorners(bb.table(t), counts, bb.params());
+}
+
+// The free space a leg reaches into (eq. 21).
+double freeSpace(const Blackboard& bb, Id l) { return bb.swept().logFactor(legRect(bb.leg(l)), bb.params()); }
+
 // The folded contacts of a leg against their null cause: log p(S | L) - log c_S summed
 // (eqs. 7, 9, 12).
 double evidenceGain(const Blackboard& bb, Id l)
@@ -76,7 +86,7 @@ double logJoint(const Blackboard& bb)
 	for (Id t = 0; t < bb.tableIdBound(); t++)
 	{
 		if (!bb.hasTable(t)) continue;
-		sum += logCell(logTablePrior(p), p) + logTableConstraints(bb.cornerCounts(t), p);
+		sum += logCell(logTablePrior(p), p) + tableFactors(bb, t, bb.cornerCounts(t));
 		const Overlaps o = overlappingTables(bb, t);
 		boardPairs += o.board, contextPairs += o.context;
 	}
@@ -85,6 +95,7 @@ double logJoint(const Blackboard& bb)
 		if (!bb.hasLeg(l)) continue;
 		sum += logCell(logLegDensity(bb, bb.leg(l), bb.leg(l).parent), p);
 		sum += evidenceGain(bb, l);  // folded contacts, relative to their null cause
+		sum += freeSpace(bb, l);
 		const Overlaps o = overlappingLegs(bb, l);
 		boardPairs += o.board, contextPairs += o.context;
 	}
@@ -98,11 +109,11 @@ double logJointAround(const Blackboard& bb, Id table)
 	const ModelParams& p = bb.params();
 	const std::vector<Id>& legs = bb.legsOf(table);
 	const Overlaps to = overlappingTables(bb, table);
-	double sum = logCell(logTablePrior(p), p) + logTableConstraints(bb.cornerCounts(table), p);
+	double sum = logCell(logTablePrior(p), p) + tableFactors(bb, table, bb.cornerCounts(table));
 	int pairs = to.board + to.context;
 	for (const Id l : legs)
 	{
-		sum += logCell(logLegDensity(bb, bb.leg(l), table), p) + evidenceGain(bb, l);
+		sum += logCell(logLegDensity(bb, bb.leg(l), table), p) + evidenceGain(bb, l) + freeSpace(bb, l);
 		for (const Id s : bb.shapeletsOf(l)) sum += logShapeletDensity(bb, static_cast<size_t>(s), l);
 		// Overlaps with legs outside the group, and inside it once per pair.
 		const OrientedRect r = legRect(bb.leg(l));
@@ -123,9 +134,9 @@ double logLegLinkGain(const Blackboard& bb, Id leg, Id table)
 	const ModelParams& p = bb.params();
 	const Leg& l = bb.leg(leg);
 	CornerCounts counts = bb.cornerCounts(table, leg);
-	const double before = logTableConstraints(counts, p);
+	const double before = tableFactors(bb, table, counts);
 	counts[logLegGivenTable(l, bb.table(table), p).corner]++;
-	return logLegDensity(bb, l, table) - logLegNull(p) + logTableConstraints(counts, p) - before;
+	return logLegDensity(bb, l, table) - logLegNull(p) + tableFactors(bb, table, counts) - before;
 }
 
 double logShapeletLinkGain(const Blackboard& bb, size_t s, Id leg)
@@ -137,7 +148,7 @@ double logOddsTable(const Blackboard& bb, Id table)
 {
 	const ModelParams& p = bb.params();
 	const Overlaps o = overlappingTables(bb, table);
-	double sum = logCell(logTablePrior(p), p) + logTableConstraints(bb.cornerCounts(table), p) +
+	double sum = logCell(logTablePrior(p), p) + tableFactors(bb, table, bb.cornerCounts(table)) +
 				 logOverlap(o.board + o.context, p);
 	for (const Id l : bb.legsOf(table)) sum += logLegDensity(bb, bb.leg(l), table) - logLegNull(p);
 	return sum;
@@ -148,7 +159,7 @@ double logOddsLeg(const Blackboard& bb, Id leg)
 	const ModelParams& p = bb.params();
 	const Overlaps o = overlappingLegs(bb, leg);
 	double sum = logCell(logLegNull(p), p) + logLegLinkGain(bb, leg, bb.leg(leg).parent) +
-				 logOverlap(o.board + o.context, p) + evidenceGain(bb, leg);
+				 logOverlap(o.board + o.context, p) + evidenceGain(bb, leg) + freeSpace(bb, leg);
 	for (const Id s : bb.shapeletsOf(leg)) sum += logShapeletLinkGain(bb, static_cast<size_t>(s), leg);
 	return sum;
 }

@@ -147,6 +147,23 @@ std::vector<Shapelet> CObservationWhiskerContacts::toShapelets(
 	return out;
 }
 
+std::vector<SweptSector> CObservationWhiskerContacts::toSweptSectors(const mrpt::poses::CPose2D& robotPose) const
+{
+	const mrpt::poses::CPose3D sensorInWorld = mrpt::poses::CPose3D(robotPose) + sensorPose;
+	std::vector<SweptSector> out;
+	for (const auto& w : whiskers)
+	{
+		const double stop = w.touched ? w.angle : w.sweep_end;
+		if (stop == w.sweep_start) continue;
+		double px, py, pz;
+		sensorInWorld.composePoint(w.mount_x, w.mount_y, 0, px, py, pz);
+		// Counter-clockwise from the smaller angle.
+		out.push_back(SweptSector{
+			px, py, w.length, sensorInWorld.yaw() + std::min(w.sweep_start, stop), std::abs(stop - w.sweep_start)});
+	}
+	return out;
+}
+
 size_t CObservationWhiskerContacts::contactCount() const
 {
 	size_t n = 0;

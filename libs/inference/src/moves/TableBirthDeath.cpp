@@ -25,10 +25,11 @@ Proposal TableBirthDeath::death(MoveContext& ctx, Id t)
 	return p;
 }
 
-// Candidate i is drawn with weight ADOPT_WEIGHT^n_i, n_i the other legs it would adopt (legs
-// within the parent gate of one of its still empty corners): 8 tables with the leg at one of
-// 4 corners in one of the 2 yaws (mod pi) consistent with the leg's yaw (mod pi/2), and the
-// pair tables.
+// Candidate i is drawn with weight ADOPT_WEIGHT^n_i phi_f,i, n_i the other legs it would adopt
+// (legs within the parent gate of one of its still empty corners) and phi_f,i the free-space
+// factor (eq. 21, 1 when off) of the legs it implies at its four corners: 8 tables with the
+// leg at one of 4 corners in one of the 2 yaws (mod pi) consistent with the leg's yaw (mod
+// pi/2), and the pair tables.
 Table TableBirthDeath::drawCandidate(MoveContext& ctx, Id l, double& logProbability)
 {
 	constexpr double ADOPT_WEIGHT = 4;
@@ -38,7 +39,9 @@ Table TableBirthDeath::drawCandidate(MoveContext& ctx, Id l, double& logProbabil
 	m_weights.clear();
 	double total = 0;
 	for (const Table& t : m_tables)
-		total += m_weights.emplace_back(std::pow(ADOPT_WEIGHT, static_cast<double>(adoptable(ctx.bb, t, l, m_candidates))));
+		total += m_weights.emplace_back(
+			std::pow(ADOPT_WEIGHT, static_cast<double>(adoptable(ctx.bb, t, l, m_candidates))) *
+			std::exp(ctx.bb.swept().logEmptyCorners(t, {0, 0, 0, 0}, ctx.mp)));
 	size_t choice = 0;
 	for (double u = ctx.rng.uniform() * total; choice + 1 < m_tables.size() && u >= m_weights[choice]; choice++)
 		u -= m_weights[choice];

@@ -1,6 +1,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <whiskermap/obs/RawlogReader.h>
+#include <whiskermap/obs/SweptSector.h>
 
 #include <map>
 #include <vector>
@@ -9,8 +10,8 @@ namespace whiskermap::baseline
 {
 /** Negative evidence: the regions the whiskers swept without touching anything. In one whisk
  *  a whisker's shaft turns from its start angle to where it stopped (its contact, or the end
- *  of the sweep), so the circular sector it covered holds no obstacle. The angles come from
- *  the actuator, not the noisy radial reading, so the sectors are exact. */
+ *  of the sweep), so the circular sector it covered holds no obstacle (obs::SweptSector). The
+ *  angles come from the actuator, not the noisy radial reading, so the sectors are exact. */
 class FreeSpace
 {
    public:
@@ -24,15 +25,10 @@ class FreeSpace
 	size_t sectors() const { return m_sectors.size(); }
 
    private:
-	struct Sector
-	{
-		Eigen::Vector2d pivot;
-		double radius, from, span;  ///< counter-clockwise from `from` through `span` radians
-	};
 	using Cell = std::pair<long, long>;
 	Cell cell(const Eigen::Vector2d& p) const;
 
-	std::vector<Sector> m_sectors;
+	std::vector<obs::SweptSector> m_sectors;
 	std::map<Cell, std::vector<size_t>> m_grid;  ///< sectors whose bounding box meets each cell
 	double m_cell = 0.5;
 };

@@ -29,6 +29,11 @@ class BlackboardSampler
 	 *  asks for a copy of the blackboard after the last sweep at that schedule index. */
 	StepResult step(
 		const std::vector<obs::Shapelet>& shapelets, uint64_t seed, int snapshotTemperature = -1);
+	/** Same, with the free space the whiskers swept in the shapelets' sweeps (negative
+	 *  evidence, eq. 21: scored when the model's free_space is on). */
+	StepResult step(
+		const std::vector<obs::Shapelet>& shapelets, const std::vector<obs::SweptSector>& swept, uint64_t seed,
+		int snapshotTemperature = -1);
 
 	/** Algorithm 1 from a given board: one insertion into the lasting map (doc/sampler.md,
 	 *  "Local annealing"). Shapelets without a leg are first associated greedily (link to a

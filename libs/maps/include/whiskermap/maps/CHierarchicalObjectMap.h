@@ -5,6 +5,7 @@
 #include <whiskermap/inference/BlackboardSampler.h>
 #include <whiskermap/inference/SamplerParams.h>
 #include <whiskermap/inference/ShapeletMemory.h>
+#include <whiskermap/inference/SweptMemory.h>
 #include <whiskermap/maps/LastingMap.h>
 #include <whiskermap/maps/StepSolver.h>
 #include <whiskermap/maps/SweepLikelihood.h>
@@ -168,6 +169,9 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	LastingMap::TStats m_lastLasting;
 	std::vector<obs::Shapelet> m_shapelets;
 	inference::ShapeletMemory m_memory;
+	/** The working memory's swept free space (model free_space on; not serialized: a reloaded
+	 *  map starts it empty). */
+	inference::SweptMemory m_sweptMemory;
 	std::array<uint64_t, inference::MOVE_COUNT> m_proposed{}, m_accepted{};
 	inference::StepResult m_lastStep;
 	TPoseRecord m_lastRecord;

@@ -5,6 +5,7 @@
 #include <whiskermap/model/ModelParams.h>
 #include <whiskermap/model/SlotVector.h>
 #include <whiskermap/model/SpatialHash.h>
+#include <whiskermap/model/SweptSpace.h>
 #include <whiskermap/obs/Shapelet.h>
 
 #include <vector>
@@ -28,8 +29,11 @@ class Blackboard
    public:
 	explicit Blackboard(const ModelParams& p);
 
-	/** Empties the blackboard and holds `shapelets`, all without parent. Keeps capacity. */
+	/** Empties the blackboard and holds `shapelets`, all without parent, and no free space.
+	 *  Keeps capacity. */
 	void reset(const std::vector<obs::Shapelet>& shapelets);
+	/** Same, with the free space the whiskers of the shapelets' sweeps swept (eq. 21). */
+	void reset(const std::vector<obs::Shapelet>& shapelets, const std::vector<obs::SweptSector>& swept);
 
 	const ModelParams& params() const { return m_p; }
 
@@ -80,6 +84,8 @@ class Blackboard
 	size_t legCount() const { return m_legs.count(); }
 
 	const std::vector<obs::Shapelet>& shapelets() const { return m_shapelets; }
+	/** The problem's swept free space (negative evidence, eq. 21); empty unless given. */
+	const SweptSpace& swept() const { return m_swept; }
 	Id shapeletParent(size_t i) const { return m_shapeletParent[i]; }
 
 	/** Child legs of `table` per corner, not counting `excludeLeg`. */
@@ -139,5 +145,6 @@ class Blackboard
 	std::vector<Leg> m_contextLegs;
 	SpatialHash m_tableHash, m_legHash, m_contextTableHash, m_contextLegHash;
 	double m_maxLegRadius = 0;
+	SweptSpace m_swept;
 };
 }  // namespace whiskermap::model

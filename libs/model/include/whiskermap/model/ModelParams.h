@@ -38,7 +38,12 @@ struct ModelParams
 	 *  within this distance of it (a leg's corner, a shapelet the leg's perimeter), metres. */
 	double parent_gate = 0.05;
 
-	/** Reads every key of `sec` (all required) and calls sec.finish(); throws core::Error. */
+	// Negative evidence (eq. 21, ours: doc/model.md, "Free space"); optional keys
+	bool free_space = false;  ///< off: the paper's model
+	double free_space_p_miss = 0.05;  ///< chance a whisker sweeping through a leg misses it
+
+	/** Reads every key of `sec` (all required but the optional free-space keys) and calls
+	 *  sec.finish(); throws core::Error. */
 	static ModelParams fromIni(core::IniSection& sec);
 
 	bool operator==(const ModelParams& o) const;

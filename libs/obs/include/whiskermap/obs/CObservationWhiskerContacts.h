@@ -3,6 +3,7 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
 #include <whiskermap/obs/Shapelet.h>
+#include <whiskermap/obs/SweptSector.h>
 #include <whiskermap/obs/TSensorNoise.h>
 #include <whiskermap/obs/TWhisker.h>
 
@@ -38,6 +39,11 @@ class CObservationWhiskerContacts : public mrpt::obs::CObservation
 
 	/** World-frame shapelets of the touched whiskers, for the robot at `robotPose`. */
 	std::vector<Shapelet> toShapelets(const mrpt::poses::CPose2D& robotPose) const;
+
+	/** World-frame free space of the sweep (negative evidence): per whisker that moved, the
+	 *  sector its shaft swept from sweep_start to its stop (the contact angle, or sweep_end
+	 *  when untouched), for the robot at `robotPose`. Fixed whiskers sweep nothing. */
+	std::vector<SweptSector> toSweptSectors(const mrpt::poses::CPose2D& robotPose) const;
 
 	/** Number of whiskers that touched something. */
 	size_t contactCount() const;
