@@ -26,8 +26,8 @@ void addCentreEquations(
 		const double f = s[i]->normal - core::angleDiff(s[i]->normal, theta, M_PI_2);
 		const double ux = std::cos(f), uy = std::sin(f);
 		const double d = ux * s[i]->x + uy * s[i]->y - w / 2;
-		// weight in units of 1/sigma_r^2: 1, or more across a shaft (shaft noise, eq. 7)
-		const double k = p.shaft_noise ? sq(p.sigma_r) / model::contactVariance(*s[i], ux, uy, p) : 1;
+		// weight in units of 1/sigma_r^2: exactly 1, or more across a shaft (shaft noise, eq. 7)
+		const double k = sq(p.sigma_r) / model::contactVariance(*s[i], ux, uy, p);
 		eq.a11 += k * ux * ux, eq.a12 += k * ux * uy, eq.a22 += k * uy * uy, eq.b1 += k * ux * d, eq.b2 += k * uy * d;
 	}
 	if (evidence && !evidence->empty())

@@ -36,16 +36,17 @@ void LegEvidence::add(const obs::Shapelet& s, const Leg& l, const ModelParams& p
 	int n = 0;
 	offset(l.theta, d, n);
 	int k = 0;
-	double best = std::numeric_limits<double>::infinity(), wr = 0;
+	double best = std::numeric_limits<double>::infinity(), wr = 0, faceNorm = 0;
 	for (int f = 0; f < 4; f++)
 	{
 		const double a = m_theta + d + f * M_PI_2, ux = std::cos(a), uy = std::sin(a);
 		const double r = ux * (s.x - l.x) + uy * (s.y - l.y) - halfExtent(l, f - n);
-		const double w = 1 / contactVariance(s, ux, uy, p), norm = 0.5 * std::log(sq(p.sigma_r) * w);
+		const double w = 1 / contactVariance(s, ux, uy, p);
+		const double norm = p.shaft_noise ? 0.5 * std::log(sq(p.sigma_r) * w) : 0;  // 1-D normaliser
 		const double cost = w * r * r - norm + wa * sq(core::angleDiff(s.normal, a, 2 * M_PI));
-		if (cost < best) best = cost, k = f, wr = w;
+		if (cost < best) best = cost, k = f, wr = w, faceNorm = norm;
 	}
-	if (p.shaft_noise) m_norm += 0.5 * std::log(sq(p.sigma_r) * wr);
+	m_norm += faceNorm;
 	Face& f = m_face[k];
 	const double ex = s.x - m_ax, ey = s.y - m_ay;
 	f.w += wr, f.sx += wr * ex, f.sy += wr * ey;
