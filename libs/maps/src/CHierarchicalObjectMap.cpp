@@ -72,7 +72,7 @@ TMappedObject CHierarchicalObjectMap::mapped(const TMapObject& o) const
 TMappedObject CHierarchicalObjectMap::mapped(model::Id t) const
 {
 	const auto& s = m_lasting.state();
-	TMappedObject m{toWorldTable(s.table(t)), s.existence(t), 0, 0};
+	TMappedObject m{toWorldTable(s.reported(t)), s.existence(t), 0, 0};
 	uint8_t corners = 0;  // corners with a leg that explains contacts (two legs may share one)
 	for (const model::Id l : s.legsOf(t))
 	{

@@ -47,6 +47,7 @@ void CHierarchicalObjectMap::TInsertionOptions::loadFromConfigFile(
 		lasting.contacts_per_leg = static_cast<uint32_t>(sec.integer("contacts_per_leg", lasting.contacts_per_leg, 0, 1000));
 		lasting.unexplained_per_spot =
 			static_cast<uint32_t>(sec.integer("unexplained_per_spot", lasting.unexplained_per_spot, 0, 1000));
+		lasting.rigid_pose = sec.boolean("rigid_pose", lasting.rigid_pose);
 		auto& a = lasting.schedule;
 		a.beta_start = sec.number("local_beta_start", a.beta_start, 1e-6, 1e6);
 		a.temperatures = static_cast<uint32_t>(sec.integer("local_temperatures", a.temperatures, 1, 10000));
@@ -69,6 +70,7 @@ void CHierarchicalObjectMap::TInsertionOptions::dumpToTextStream(std::ostream& o
 {
 	out << "mode=" << modeName(mode) << "\nvisit_radius=" << lasting.visit_radius
 		<< "\ncontacts_per_leg=" << lasting.contacts_per_leg << "\nunexplained_per_spot=" << lasting.unexplained_per_spot
+		<< "\nrigid_pose=" << lasting.rigid_pose
 		<< "\nlocal_beta_start=" << lasting.schedule.beta_start << "\nlocal_temperatures=" << lasting.schedule.temperatures
 		<< "\nlocal_sweeps_per_temperature=" << lasting.schedule.sweeps_per_temperature
 		<< "\nlocal_coldest_sweeps=" << lasting.schedule.coldest_sweeps

@@ -1,6 +1,6 @@
 // CHierarchicalObjectMap: versioned MRPT serialization (doc/map-plugin.md). Version 0 (no
 // lasting map) still loads, as a per-pose map; version 1 (no shaft directions) as contacts
-// without a known shaft.
+// without a known shaft; versions before 3 with the lasting tables reported at their own poses.
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 
@@ -48,6 +48,7 @@ void writeLasting(CArchive& out, const model::LastingState& s)
 		if (!s.hasTable(t)) continue;
 		const auto& tb = s.table(t);
 		out << tb.x << tb.y << tb.theta << tb.leg_width << tb.texture << s.existence(t);
+		out << s.reported(t).x << s.reported(t).y << s.reported(t).theta;  // version 3
 		tableIndex[static_cast<size_t>(t)] = n++;
 	}
 	out.WriteAs<uint32_t>(s.legCount());
@@ -77,10 +78,14 @@ void readLasting(CArchive& in, model::LastingState& s, uint8_t version)
 {
 	std::vector<model::Table> tables(in.ReadAs<uint32_t>());
 	std::vector<double> existence(tables.size());
+	std::vector<model::Table> reported;  // versions before 3: the tables' own poses
 	for (size_t i = 0; i < tables.size(); i++)
 	{
 		auto& t = tables[i];
 		in >> t.x >> t.y >> t.theta >> t.leg_width >> t.texture >> existence[i];
+		if (version < 3) continue;
+		reported.push_back(t);
+		in >> reported.back().x >> reported.back().y >> reported.back().theta;
 	}
 	std::vector<model::Leg> legs(in.ReadAs<uint32_t>());
 	std::vector<model::LegEvidence> evidence(legs.size());
@@ -110,11 +115,11 @@ void readLasting(CArchive& in, model::LastingState& s, uint8_t version)
 	}
 	uint64_t seq;
 	in >> seq;
-	s.restore(tables, existence, legs, evidence, contacts, seq);
+	s.restore(tables, existence, reported, legs, evidence, contacts, seq);
 }
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 2; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 3; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -156,6 +161,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	writeLasting(out, m_lasting.state());
 	// Version 2: shaft noise (shapelets carry their shafts above) and free space.
 	out << m.shaft_noise << m.sigma_across << m.free_space << m.free_space_p_miss;
+	// Version 3: the lasting tables' reported poses (in writeLasting) and whether they are rigid fits.
+	out << l.rigid_pose;
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -165,6 +172,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 0:
 		case 1:
 		case 2:
+		case 3:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -213,6 +221,8 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 			m.shaft_noise = defaults.shaft_noise, m.sigma_across = defaults.sigma_across;
 			m.free_space = defaults.free_space, m.free_space_p_miss = defaults.free_space_p_miss;
 			if (version >= 2) in >> m.shaft_noise >> m.sigma_across >> m.free_space >> m.free_space_p_miss;
+			insertionOptions.lasting.rigid_pose = false;  // versions before 3 reported the tables' own poses
+			if (version >= 3) in >> insertionOptions.lasting.rigid_pose;
 			m_consolidator.setObjects(std::move(objs));
 			m_consolidator.setOptions(c);
 		}

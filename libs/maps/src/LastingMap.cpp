@@ -1,3 +1,4 @@
+#include <whiskermap/inference/RigidTableFit.h>
 #include <whiskermap/maps/LastingMap.h>
 
 #include <algorithm>
@@ -57,6 +58,19 @@ std::vector<double> LastingMap::existence(
 	return out;
 }
 
+void LastingMap::refitReported(const model::ModelParams& model)
+{
+	m_refit.insert(m_refit.end(), m_newTables.begin(), m_newTables.end());
+	for (const model::Id l : m_newLegs)
+		if (l != model::NONE) m_refit.push_back(m_state.leg(l).parent);
+	std::sort(m_refit.begin(), m_refit.end());
+	m_refit.erase(std::unique(m_refit.begin(), m_refit.end()), m_refit.end());
+	model::ModelParams shaft = model;
+	shaft.shaft_noise = true;  // the reading errs along its shaft (contacts without one: isotropic)
+	for (const model::Id t : m_refit)
+		if (t != model::NONE && m_state.hasTable(t)) m_state.setReported(t, inference::fitRigidTable(m_state, t, shaft));
+}
+
 LastingMap::TStats LastingMap::insert(
 	const std::vector<obs::Shapelet>& contacts, const model::ModelParams& model,
 	const inference::SamplerParams& sampler, uint64_t seed)
@@ -84,12 +98,16 @@ LastingMap::TStats LastingMap::insert(
 	const inference::StepResult result = m_sampler->anneal(board, seed);
 	const model::Blackboard& solved = m_sampler->best();
 
+	m_refit.clear();  // tables the region's legs stood under (a context table may lose or gain one)
+	for (const model::Id l : m_region->legs)
+		if (l != model::NONE && m_state.hasLeg(l)) m_refit.push_back(m_state.leg(l).parent);
 	m_state.replace(*m_region, solved, existence(board, solved, model), m_newTables, m_newLegs);
 	for (const model::Id l : m_newLegs)
 		if (l != model::NONE) m_state.fold(l, m_options.contacts_per_leg, model);
 	for (const model::Id c : m_new)
 		if (m_state.hasContact(c) && m_state.contact(c).leg == model::NONE)
 			m_state.forgetUnexplained(c, m_options.unexplained_per_spot, model.leg_width);
+	if (m_options.rigid_pose) refitReported(model);
 
 	for (model::Id t = 0; t < board.tableIdBound(); t++) stats.visited += board.hasTable(t) && !board.tableDormant(t);
 	for (model::Id l = 0; l < board.legIdBound(); l++) stats.visited += board.hasLeg(l) && !board.legDormant(l);

@@ -48,9 +48,11 @@ Id LastingState::addTable(const Table& t, double existence)
 {
 	const Id id = m_tables.add(t);
 	growTo(m_existence, m_tables.capacity(), 0.0);
+	growTo(m_reported, m_tables.capacity());
 	growTo(m_tableLegs, m_tables.capacity());
 	growTo(m_tableMark, m_tables.capacity(), 0u);
 	m_existence[id] = existence;
+	m_reported[id] = t;
 	m_tableLegs[id].clear();
 	m_tableGrid.insert(id, t.x, t.y);
 	return id;
@@ -275,12 +277,17 @@ size_t LastingState::forgetUnexplained(Id c, size_t keep, double radius)
 }
 
 void LastingState::restore(
-	const std::vector<Table>& tables, const std::vector<double>& existence, const std::vector<Leg>& legs,
-	const std::vector<LegEvidence>& evidence, const std::vector<Contact>& contacts, uint64_t seq)
+	const std::vector<Table>& tables, const std::vector<double>& existence, const std::vector<Table>& reported,
+	const std::vector<Leg>& legs, const std::vector<LegEvidence>& evidence, const std::vector<Contact>& contacts,
+	uint64_t seq)
 {
 	clear();
 	std::vector<Id> tableIds, legIds;
-	for (size_t i = 0; i < tables.size(); i++) tableIds.push_back(addTable(tables[i], existence[i]));
+	for (size_t i = 0; i < tables.size(); i++)
+	{
+		tableIds.push_back(addTable(tables[i], existence[i]));
+		if (!reported.empty()) m_reported[tableIds.back()] = reported.at(i);
+	}
 	for (size_t i = 0; i < legs.size(); i++)
 	{
 		Leg l = legs[i];

@@ -30,6 +30,10 @@ class LastingMap
 		/** Unexplained contacts kept within one leg width of each other; older ones are
 		 *  forgotten (they never found a cause). */
 		uint32_t unexplained_per_spot = 4;
+		/** Report each table at the pose of its rigid fit to all its legs' contacts
+		 *  (inference::fitRigidTable), refitted when its legs change; false: the model's own
+		 *  table pose (legs loose at its corners, eq. 6). */
+		bool rigid_pose = true;
 		/** The local anneal's schedule (insertOpts local_*, doc/map-plugin.md): it starts
 		 *  from the map as it was with the new contacts associated, not from an empty board,
 		 *  so it runs cooler and shorter than a per-pose step. beta_end and the moves are the
@@ -81,6 +85,9 @@ class LastingMap
 	/** Existence of each table of `solved` (grown from `start`, the region's board). */
 	std::vector<double> existence(
 		const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model);
+	/** Refits the reported pose of every table whose legs the last replace() may have changed:
+	 *  the region's, and those its legs stood under before (m_refit) or stand under now. */
+	void refitReported(const model::ModelParams& model);
 
 	model::LastingState m_state;
 	TOptions m_options;
@@ -90,6 +97,6 @@ class LastingMap
 	TOptions::TSchedule m_samplerSchedule;
 	std::unique_ptr<model::LastingState::Region> m_region;
 	inference::TableExistence m_existence;
-	std::vector<model::Id> m_new, m_newTables, m_newLegs;
+	std::vector<model::Id> m_new, m_newTables, m_newLegs, m_refit;
 };
 }  // namespace whiskermap::maps

@@ -83,6 +83,10 @@ class LastingState
 	bool hasContact(Id c) const { return m_contacts.alive(c); }
 	const Table& table(Id t) const { return m_tables[t]; }
 	double existence(Id t) const { return m_existence[t]; }
+	/** The pose the map reports for table t (doc/map-plugin.md, "Reported pose"): its rigid
+	 *  fit once setReported() was called, else the table itself. */
+	const Table& reported(Id t) const { return m_reported[t]; }
+	void setReported(Id t, const Table& pose) { m_reported[t] = pose; }
 	const Leg& leg(Id l) const { return m_legs[l]; }
 	const LegEvidence& evidence(Id l) const { return m_evidence[l]; }
 	const Contact& contact(Id c) const { return m_contacts[c]; }
@@ -95,11 +99,13 @@ class LastingState
 	uint64_t contactsExplained(Id l) const { return m_legContacts[l].size() + m_evidence[l].count(); }
 	uint64_t nextSeq() const { return m_seq; }
 
-	/** Rebuilds a state from its parts (deserialization): tables with their existence, legs
-	 *  (parent = index into `tables`) with evidence, contacts (leg = index into `legs`). */
+	/** Rebuilds a state from its parts (deserialization): tables with their existence and
+	 *  reported poses (empty: the tables), legs (parent = index into `tables`) with evidence,
+	 *  contacts (leg = index into `legs`). */
 	void restore(
-		const std::vector<Table>& tables, const std::vector<double>& existence, const std::vector<Leg>& legs,
-		const std::vector<LegEvidence>& evidence, const std::vector<Contact>& contacts, uint64_t seq);
+		const std::vector<Table>& tables, const std::vector<double>& existence, const std::vector<Table>& reported,
+		const std::vector<Leg>& legs, const std::vector<LegEvidence>& evidence, const std::vector<Contact>& contacts,
+		uint64_t seq);
 	void clear();
 
    private:
@@ -116,6 +122,7 @@ class LastingState
 	SlotVector<Leg> m_legs;
 	SlotVector<Contact> m_contacts;
 	std::vector<double> m_existence;
+	std::vector<Table> m_reported;
 	std::vector<LegEvidence> m_evidence;
 	std::vector<std::vector<Id>> m_tableLegs, m_legContacts;
 	SpatialGrid m_tableGrid, m_legGrid, m_contactGrid;  ///< contacts: the unexplained ones
