@@ -88,6 +88,47 @@ TEST(LegEvidence, EqualsEq7WithShaftNoise)
 	}
 }
 
+// Both kinds of face moments are kept whichever model folds: evidence folded with the paper's
+// eq. 7 scores as eq. 7 under shaft noise (what the reported pose fits), and the reverse.
+TEST(LegEvidence, ScoresUnderTheOtherNoiseModelToo)
+{
+	ModelParams paper, shaft;
+	shaft.shaft_noise = true;
+	for (int trial = 0; trial < 100; trial++)
+	{
+		const Leg l{u(-5, 5), u(-5, 5), u(-M_PI, M_PI), paper.leg_width, paper.leg_width, 0.7, NONE, -1};
+		const auto contacts = contactsOn(l, 1 + static_cast<int>(rng() % 12));
+		for (const bool foldWithShaft : {false, true})
+		{
+			const ModelParams &fold = foldWithShaft ? shaft : paper, &score = foldWithShaft ? paper : shaft;
+			LegEvidence e;
+			for (const auto& s : contacts) e.add(s, l, fold);
+			Leg m = l;
+			m.x += u(-0.001, 0.001), m.y += u(-0.001, 0.001);
+			double sum = 0;
+			for (const auto& s : contacts) sum += logShapeletGivenLeg(s, m, score);
+			EXPECT_NEAR(e.logLikelihood(m, score), sum, 1e-7 * std::abs(sum)) << "trial " << trial;
+		}
+	}
+}
+
+// A version-2 stream held one set of face moments (34 numbers): both kinds read it.
+TEST(LegEvidence, OlderStatsServeBothKinds)
+{
+	ModelParams paper, shaft;
+	shaft.shaft_noise = true;
+	const Leg l{1, 2, 0.3, paper.leg_width, paper.leg_width, 0.7, NONE, -1};
+	LegEvidence e;
+	for (const auto& s : contactsOn(l, 6)) e.add(s, l, paper);
+	auto v = e.stats();
+	for (size_t k = 34; k < v.size(); k++) v[k] = 0;  // what a version-2 reader leaves
+	const LegEvidence old = LegEvidence::fromStats(v, e.count(), 34);
+	Leg m = l;
+	m.x += 0.002;
+	EXPECT_DOUBLE_EQ(old.logLikelihood(m, paper), e.logLikelihood(m, paper));
+	EXPECT_DOUBLE_EQ(old.logLikelihood(m, shaft) - old.logLikelihood(l, shaft), e.logLikelihood(m, paper) - e.logLikelihood(l, paper));
+}
+
 // Merging the evidence of two legs (folded at different poses, yaws a quarter turn apart, as
 // when two legs are merged) scores as the two did apart, at any pose.
 TEST(LegEvidence, MergeAddsTheTwoScores)

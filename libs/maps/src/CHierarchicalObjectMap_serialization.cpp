@@ -98,10 +98,11 @@ void readLasting(CArchive& in, model::LastingState& s, uint8_t version)
 			THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (leg parent out of range)");
 		g.parent = parent;
 		std::array<double, model::LegEvidence::STATS> stats{};
-		for (size_t k = 0; k < (version >= 2 ? stats.size() : 33); k++) in >> stats[k];
+		const size_t known = version >= 3 ? stats.size() : version == 2 ? 34 : 33;
+		for (size_t k = 0; k < known; k++) in >> stats[k];
 		uint32_t count;
 		in >> count;
-		evidence[i] = model::LegEvidence::fromStats(stats, count);
+		evidence[i] = model::LegEvidence::fromStats(stats, count, known);
 	}
 	std::vector<model::LastingState::Contact> contacts(in.ReadAs<uint32_t>());
 	for (auto& k : contacts)

@@ -83,7 +83,12 @@ LegFit logLegGivenTable(const Leg& l, const Table& t, const ModelParams& p)
 
 double contactVariance(const obs::Shapelet& s, double ux, double uy, const ModelParams& p)
 {
-	if (!p.shaft_noise || !s.hasShaft()) return sq(p.sigma_r);
+	return p.shaft_noise ? shaftVariance(s, ux, uy, p) : sq(p.sigma_r);
+}
+
+double shaftVariance(const obs::Shapelet& s, double ux, double uy, const ModelParams& p)
+{
+	if (!s.hasShaft()) return sq(p.sigma_r);
 	return sq(p.sigma_r * (ux * s.shaft_x + uy * s.shaft_y)) + sq(p.sigma_across);  // shaft noise
 }
 

@@ -44,6 +44,9 @@ LegFit logLegGivenTable(const Leg& l, const Table& t, const ModelParams& p);
 /** Variance of contact s's position along the unit direction (ux, uy): sigma_r^2 (eq. 7),
  *  or with p.shaft_noise and a known shaft sigma_r^2 (u . shaft)^2 + sigma_across^2. */
 double contactVariance(const obs::Shapelet& s, double ux, double uy, const ModelParams& p);
+/** contactVariance under shaft noise, whatever p.shaft_noise says: sigma_r^2 (u . shaft)^2 +
+ *  sigma_across^2, or sigma_r^2 for a contact without a known shaft. */
+double shaftVariance(const obs::Shapelet& s, double ux, double uy, const ModelParams& p);
 
 /** log p(S | L) = log alpha_S - Delta_LS (eq. 7). The leg's face that explains the contact
  *  best counts: r is the exact distance to that face (a segment of the perimeter) and the

@@ -14,7 +14,11 @@ namespace whiskermap::model
  *
  *  A folded contact keeps the face it lay on when folded (the leg face that explains it best
  *  in eq. 7's terms: distance to the face's line and normal against the face's normal) and
- *  the weights 1/sigma^2 of the model that scored it. For the leg at any pose,
+ *  the weights 1/sigma^2 of the model that scored it, its distance across the face weighted
+ *  both ways: by 1/sigma_r^2 (the paper's eq. 7) and by 1/its variance under shaft noise
+ *  (doc/model.md, "Shaft noise"); a score under a model uses the moments of its kind, so a
+ *  map inferring with the paper's eq. 7 can still fit under shaft noise (the reported pose,
+ *  doc/map-plugin.md). For the leg at any pose,
  *  the sum of Delta_LS (eq. 7) over the folded contacts is then a quadratic in the leg's
  *  centre, yaw and texture: r is the distance to the line of the contact's face, the angle
  *  error is the contact's normal against that face's normal. This equals eq. 7 while each
@@ -50,11 +54,14 @@ class LegEvidence
 	uint32_t count() const { return m_count; }
 	bool empty() const { return m_count == 0; }
 
-	/** Raw statistics, for serialization: 3 + 4 * 6 + 6 + 1 numbers and the count (streams
-	 *  of map version 1 hold the first 33: no shaft-noise normaliser). */
-	static constexpr size_t STATS = 34;
+	/** Raw statistics, for serialization: 3 + 4 * 6 + 6 + 1 + 4 * 6 numbers and the count
+	 *  (streams of map version 1 hold the first 33: no shaft-noise normaliser; version 2 the
+	 *  first 34: one set of face moments, weighted as the model that folded them said). */
+	static constexpr size_t STATS = 58;
 	std::array<double, STATS> stats() const;
-	static LegEvidence fromStats(const std::array<double, STATS>& v, uint32_t count);
+	/** From the first `known` numbers of `v` (older streams: 33 or 34); without the second
+	 *  set of face moments, both sets are the first. */
+	static LegEvidence fromStats(const std::array<double, STATS>& v, uint32_t count, size_t known = STATS);
 
 	bool operator==(const LegEvidence& o) const { return stats() == o.stats() && m_count == o.m_count; }
 
@@ -69,10 +76,15 @@ class LegEvidence
 	void offset(double theta, double& d, int& n) const;
 
 	double m_ax = 0, m_ay = 0, m_theta = 0;  ///< anchor point and reference yaw
-	std::array<Face, 4> m_face{};  ///< by face index relative to the reference yaw
+	using Faces = std::array<Face, 4>;
+	/** The face moments a score under `p` uses (shaft noise or the paper's eq. 7). */
+	const Faces& faces(const ModelParams& p) const { return p.shaft_noise ? m_shaftFace : m_face; }
+
+	Faces m_face{};  ///< by face index relative to the reference yaw, weights 1/sigma_r^2
+	Faces m_shaftFace{};  ///< the same contacts weighted by 1/variance under shaft noise
 	double m_wa = 0, m_sa = 0, m_saa = 0;  ///< normal error vs face normal at the reference yaw
 	double m_wt = 0, m_st = 0, m_stt = 0;  ///< texture
-	double m_norm = 0;  ///< sum of log(sigma_r / sigma across the face) (shaft noise)
+	double m_norm = 0;  ///< sum of log(sigma_r / sigma across the face) (shaft noise only)
 	uint32_t m_count = 0;
 };
 }  // namespace whiskermap::model
