@@ -11,15 +11,6 @@ using model::NONE;
 
 namespace
 {
-/** The k-th live id below `bound` (k < count). */
-template <class Alive>
-Id nthAlive(Id bound, size_t k, Alive&& alive)
-{
-	for (Id id = 0; id < bound; id++)
-		if (alive(id) && k-- == 0) return id;
-	return NONE;
-}
-
 double logCount(size_t n) { return std::log(static_cast<double>(n)); }
 }  // namespace
 
@@ -45,7 +36,7 @@ std::optional<Proposal> GridBirthDeath::legDeath(MoveContext& ctx)
 	const model::Blackboard& bb = ctx.bb;
 	const size_t legs = bb.legCount();
 	if (legs == 0) return std::nullopt;
-	const Id l = nthAlive(bb.legIdBound(), ctx.rng.pick(legs), [&](Id id) { return bb.hasLeg(id); });
+	const Id l = nthLeg(bb, ctx.rng.pick(legs));
 	if (bb.leg(l).parent != NONE || bb.shapeletsOf(l).size() != 1 || !bb.evidence(l).empty() ||
 		m_grid.legIndex(bb.leg(l)) < 0)
 		return std::nullopt;
@@ -76,7 +67,7 @@ std::optional<Proposal> GridBirthDeath::tableDeath(MoveContext& ctx)
 	model::Blackboard& bb = ctx.bb;
 	const size_t tables = bb.tableCount();
 	if (tables == 0) return std::nullopt;
-	const Id t = nthAlive(bb.tableIdBound(), ctx.rng.pick(tables), [&](Id id) { return bb.hasTable(id); });
+	const Id t = nthTable(bb, ctx.rng.pick(tables));
 	if (m_grid.tableIndex(bb.table(t)) < 0) return std::nullopt;
 	for (Id l = 0; l < bb.legIdBound(); l++)  // the birth at t's pose would adopt exactly t's legs
 		if (bb.hasLeg(l) && bb.leg(l).parent == NONE && LegReparent::withinGate(ctx, l, t)) return std::nullopt;

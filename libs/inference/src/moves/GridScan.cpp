@@ -29,10 +29,7 @@ RandomScan gridScan(const PoseGrid& grid)
 			  [=](MoveContext& c) -> std::optional<Proposal> {
 				  const size_t legs = c.bb.legCount();
 				  if (legs == 0) return std::nullopt;
-				  size_t k = c.rng.pick(legs);
-				  model::Id l = 0;
-				  while (!c.bb.hasLeg(l) || k-- > 0) l++;
-				  std::optional<Proposal> p = reparent->propose(c, l);
+				  std::optional<Proposal> p = reparent->propose(c, nthLeg(c.bb, c.rng.pick(legs)));
 				  if (p) p->logForward -= std::log(static_cast<double>(legs)), p->logReverse -= std::log(static_cast<double>(legs));
 				  return p;
 			  },

@@ -11,15 +11,6 @@ using model::NONE;
 
 namespace
 {
-/** The k-th id below `bound` for which alive(id). */
-template <class Alive>
-Id nth(size_t k, Alive&& alive)
-{
-	Id id = 0;
-	while (!alive(id) || k-- > 0) id++;
-	return id;
-}
-
 /** Another index than `from` (>= 0) below n, uniformly; -log(n - 1) is its probability. */
 size_t other(SamplerRandom& rng, size_t n, int from)
 {
@@ -38,7 +29,7 @@ std::optional<Proposal> GridShift::table(MoveContext& ctx)
 	model::Blackboard& bb = ctx.bb;
 	const size_t tables = bb.tableCount(), poses = m_grid.tables.size();
 	if (tables == 0 || poses < 2) return std::nullopt;
-	const Id t = nth(ctx.rng.pick(tables), [&](Id id) { return bb.hasTable(id); });
+	const Id t = nthTable(bb, ctx.rng.pick(tables));
 	const int from = m_grid.tableIndex(bb.table(t));
 	if (from < 0) return std::nullopt;
 	m_isTable = true, m_id = t, m_oldTable = bb.table(t);
@@ -60,7 +51,7 @@ std::optional<Proposal> GridShift::leg(MoveContext& ctx)
 	model::Blackboard& bb = ctx.bb;
 	const size_t legs = bb.legCount(), poses = m_grid.legs.size();
 	if (legs == 0 || poses < 2) return std::nullopt;
-	const Id l = nth(ctx.rng.pick(legs), [&](Id id) { return bb.hasLeg(id); });
+	const Id l = nthLeg(bb, ctx.rng.pick(legs));
 	const int from = m_grid.legIndex(bb.leg(l));
 	if (from < 0) return std::nullopt;
 	m_isTable = false, m_id = l, m_oldLeg = bb.leg(l);

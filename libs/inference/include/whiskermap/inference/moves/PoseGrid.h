@@ -1,6 +1,5 @@
 #pragma once
-#include <whiskermap/model/Leg.h>
-#include <whiskermap/model/Table.h>
+#include <whiskermap/model/Blackboard.h>
 
 #include <vector>
 
@@ -30,4 +29,19 @@ struct PoseGrid
 		return -1;
 	}
 };
+
+/** The k-th live leg (table) of `bb` by id, k < legCount() (tableCount()): the random scan's
+ *  uniform choice of a hypothesis. */
+inline model::Id nthLeg(const model::Blackboard& bb, size_t k)
+{
+	model::Id id = 0;
+	while (!bb.hasLeg(id) || k-- > 0) id++;
+	return id;
+}
+inline model::Id nthTable(const model::Blackboard& bb, size_t k)
+{
+	model::Id id = 0;
+	while (!bb.hasTable(id) || k-- > 0) id++;
+	return id;
+}
 }  // namespace whiskermap::inference::moves
