@@ -4,15 +4,14 @@
 // visits (tables and their poses, legs with their grid poses and parent links, which leg each
 // shapelet is on) matches the exact posterior from logJoint: a chi-squared test, p > 0.001.
 // The same test run with one reverse density dropped must fail (p < 0.001): the test can fail.
-// Steps: WHISKERMAP_STATIONARY_STEPS, default 10^6 (3 * 10^5 under
-// the sanitizers).
+// Steps: WHISKERMAP_STATIONARY_STEPS, default 10^6 (3 * 10^5 under the sanitizers).
 #include <gtest/gtest.h>
 #include <whiskermap/inference/Acceptance.h>
 #include <whiskermap/inference/moves/GridScan.h>
 #include <whiskermap/inference/moves/LegReparent.h>
 #include <whiskermap/model/Posterior.h>
 
-#include "SyntheticTable.h"
+#include "GridProblem.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -25,127 +24,22 @@ using inference::moves::MoveContext;
 using inference::moves::PoseGrid;
 using model::Id;
 using model::NONE;
+using Problem = test::GridProblem;
+constexpr auto stateKey = test::gridStateKey;
 
 namespace
 {
-#if defined(__SANITIZE_ADDRESS__)
-constexpr long DEFAULT_STEPS = 300000;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr long DEFAULT_STEPS = 300000;
-#else
-constexpr long DEFAULT_STEPS = 1000000;
-#endif
-#else
-constexpr long DEFAULT_STEPS = 1000000;
-#endif
-
-long steps()
-{
-	const char* env = std::getenv("WHISKERMAP_STATIONARY_STEPS");
-	return env ? std::atol(env) : DEFAULT_STEPS;
-}
-
-/** The problem: 3 contacts on two legs of a known table, a grid of 3 leg poses (the two true
- *  legs and one 8 mm off) and 2 table poses (the true one and one 1 cm off). */
-struct Problem
-{
-	model::ModelParams P;
-	inference::SamplerParams S;
-	std::vector<obs::Shapelet> shapelets;
-	PoseGrid grid;
-
-	Problem()
-	{
-		P.delta = 0.5, P.epsilon = 0.5, P.c_T = 1, P.c_S = 1e6, P.c_L = 1, P.alpha_L = 10;
-		const model::Table t{0, 0, 0.3, P.leg_width, P.texture};
-		shapelets = test::touchTable(t, P, {{0, 0, 0}, {0, 1, 0.01}, {1, 2, 0}});
-		for (const int corner : {0, 1})
-		{
-			model::Leg l;
-			model::tableCorner(t, corner, P, l.x, l.y);
-			l.theta = t.theta, l.wx = l.wy = P.leg_width, l.texture = P.texture;
-			grid.legs.push_back(l);
-		}
-		grid.legs.push_back(grid.legs[0]);
-		grid.legs.back().x += 0.008;
-		grid.tables = {t, t};
-		grid.tables[1].x += 0.01;
-	}
-};
-
-/** The state as a string: the table's grid index (or -), then per shapelet the rank of its
- *  leg in order of first appearance (or -), then per leg its grid index and parent flag. */
-std::string stateKey(const model::Blackboard& bb, const PoseGrid& grid)
-{
-	std::string key = "T";
-	for (Id t = 0; t < bb.tableIdBound(); t++)
-		if (bb.hasTable(t)) key += std::to_string(grid.tableIndex(bb.table(t)));
-	key += " S";
-	std::vector<Id> order;
-	for (size_t s = 0; s < bb.shapelets().size(); s++)
-	{
-		const Id l = bb.shapeletParent(s);
-		if (l == NONE)
-		{
-			key += '-';
-			continue;
-		}
-		size_t r = 0;
-		while (r < order.size() && order[r] != l) r++;
-		if (r == order.size()) order.push_back(l);
-		key += std::to_string(r);
-	}
-	key += " L" + std::to_string(bb.legCount() - order.size());  // legs explaining nothing (none here)
-	for (const Id l : order) key += " g" + std::to_string(grid.legIndex(bb.leg(l))) + (bb.leg(l).parent == NONE ? "f" : "p");
-	return key;
-}
+long steps() { return test::lengthFromEnv("WHISKERMAP_STATIONARY_STEPS", 1000000, 300000); }
 
 /** Every state of the grid problem with its exact posterior probability (from logJoint). */
 std::map<std::string, double> exactPosterior(const Problem& pr)
 {
 	std::map<std::string, double> logs;
-	const size_t n = pr.shapelets.size(), g = pr.grid.legs.size();
-	model::Blackboard bb(pr.P);
-	inference::SamplerRandom rng;
-	const inference::Acceptance acceptance;
-	MoveContext ctx(bb, pr.P, pr.S, rng, acceptance);
-	std::vector<int> block(n, -1);
-	// Assignments of shapelets to legs (restricted growth: leg b first appears before b + 1).
-	const auto visit = [&](int blocks) {
-		size_t combos = 1;
-		for (int b = 0; b < blocks; b++) combos *= 2 * g;
-		for (int t = -1; t < static_cast<int>(pr.grid.tables.size()); t++)
-			for (size_t c = 0; c < combos; c++)
-			{
-				bb.reset(pr.shapelets);
-				const Id table = t < 0 ? NONE : bb.addTable(pr.grid.tables[static_cast<size_t>(t)]);
-				bool valid = true;
-				std::vector<Id> legs;
-				for (size_t b = 0, code = c; b < static_cast<size_t>(blocks); b++, code /= 2 * g)
-				{
-					legs.push_back(bb.addLeg(pr.grid.legs[code % (2 * g) / 2]));
-					if (code % 2 == 0) continue;
-					valid = valid && table != NONE && inference::moves::LegReparent::withinGate(ctx, legs.back(), table);
-					if (valid) bb.setLegParent(legs.back(), table);
-				}
-				if (!valid) continue;
-				for (size_t s = 0; s < n; s++)
-					if (block[s] >= 0) bb.setShapeletParent(s, legs[static_cast<size_t>(block[s])]);
-				const std::string key = stateKey(bb, pr.grid);
-				EXPECT_EQ(logs.count(key), 0u) << key;
-				logs[key] = model::logJoint(bb);
-			}
-	};
-	const auto assign = [&](auto& self, size_t s, int blocks) -> void {
-		if (s == n) return visit(blocks);
-		for (int b = -1; b <= blocks; b++)
-		{
-			block[s] = b;
-			self(self, s + 1, std::max(blocks, b + 1));
-		}
-	};
-	assign(assign, 0, 0);
+	test::forEachGridState(pr, pr.shapelets, [&](const model::Blackboard& bb) {
+		const std::string key = stateKey(bb, pr.grid);
+		EXPECT_EQ(logs.count(key), 0u) << key;
+		logs[key] = model::logJoint(bb);
+	});
 	double top = -INFINITY, z = 0;
 	for (const auto& kv : logs) top = std::max(top, kv.second);
 	for (const auto& kv : logs) z += std::exp(kv.second - top);
