@@ -19,9 +19,9 @@ RandomScan gridScan(const PoseGrid& grid)
 	RandomScan scan;
 	// Name, weight, index of the reverse, propose, finish; a move and its reverse together.
 	scan.add({"grid leg birth", 1, 1, [=](MoveContext& c) { return births->legBirth(c); }, finishBirths});
-	scan.add({"grid leg death", 1, 0, [=](MoveContext& c) { return births->legDeath(c); }, finishBirths});
+	scan.add({"grid leg death", 2, 0, [=](MoveContext& c) { return births->legDeath(c); }, finishBirths});
 	scan.add({"grid table birth", 1, 3, [=](MoveContext& c) { return births->tableBirth(c); }, finishBirths});
-	scan.add({"grid table death", 1, 2, [=](MoveContext& c) { return births->tableDeath(c); }, finishBirths});
+	scan.add({"grid table death", 2, 2, [=](MoveContext& c) { return births->tableDeath(c); }, finishBirths});
 	scan.add({"fixed-pose link", 2, 4, [=](MoveContext& c) { return link->propose(c); },
 			  [=](MoveContext& c, bool yes) { link->finish(c, yes); }});
 	// A leg drawn uniformly (the same number of legs before and after), then LegReparent.
