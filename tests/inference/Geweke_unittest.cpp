@@ -179,13 +179,6 @@ TEST(Geweke, SuccessiveConditionalMatchesMarginalConditional)
 
 	// The leg death's reverse density dropped: the chain no longer leaves P(board | data)
 	// invariant, and the test must see it.
-	inference::RandomScan wrong = inference::moves::gridScan(pr.grid);
-	auto& death = wrong.moves()[1];
-	ASSERT_EQ(death.name, "grid leg death");
-	death.propose = [inner = death.propose](MoveContext& c) {
-		auto p = inner(c);
-		if (p) p->logReverse = 0;
-		return p;
-	};
+	inference::RandomScan wrong = test::gridScanWithoutDeathReverse(pr.grid);
 	EXPECT_GT(largestZ(mc, successiveConditional(pr, wrong, n)), 4);
 }

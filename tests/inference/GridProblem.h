@@ -1,5 +1,7 @@
 #pragma once
+#include <gtest/gtest.h>
 #include <whiskermap/inference/Acceptance.h>
+#include <whiskermap/inference/moves/GridScan.h>
 #include <whiskermap/inference/moves/LegReparent.h>
 #include <whiskermap/inference/moves/PoseGrid.h>
 
@@ -150,5 +152,21 @@ inline void withShapelets(const model::Blackboard& from, const std::vector<obs::
 		}
 	for (size_t s = 0; s < y.size(); s++)
 		if (from.shapeletParent(s) != model::NONE) to.setShapeletParent(s, legs[from.shapeletParent(s)]);
+}
+
+/** The grid scan with one move deliberately wrong: the grid leg death reports logReverse = 0
+ *  (its reverse density, the grid birth's -log N - log |G|, dropped). The exactness tests
+ *  must fail on it. */
+inline inference::RandomScan gridScanWithoutDeathReverse(const inference::moves::PoseGrid& grid)
+{
+	inference::RandomScan scan = inference::moves::gridScan(grid);
+	inference::ScanMove& death = scan.moves()[1];
+	EXPECT_EQ(death.name, "grid leg death");
+	death.propose = [inner = death.propose](inference::moves::MoveContext& c) {
+		auto p = inner(c);
+		if (p) p->logReverse = 0;
+		return p;
+	};
+	return scan;
 }
 }  // namespace whiskermap::test

@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 #include <whiskermap/inference/Acceptance.h>
 #include <whiskermap/inference/moves/GridScan.h>
-#include <whiskermap/inference/moves/LegReparent.h>
 #include <whiskermap/model/Posterior.h>
 
 #include "GridProblem.h"
@@ -21,9 +20,6 @@
 
 using namespace whiskermap;
 using inference::moves::MoveContext;
-using inference::moves::PoseGrid;
-using model::Id;
-using model::NONE;
 using Problem = test::GridProblem;
 constexpr auto stateKey = test::gridStateKey;
 
@@ -167,14 +163,7 @@ TEST(StationaryDistribution, ReversibleJumpChainMatchesTheExactPosterior)
 
 	// The same chain with the leg death's reverse density (the grid birth's -log N - log |G|)
 	// dropped: the chain then favours deaths, and the test must see it.
-	inference::RandomScan wrong = inference::moves::gridScan(pr.grid);
-	auto& death = wrong.moves()[1];
-	ASSERT_EQ(death.name, "grid leg death");
-	death.propose = [inner = death.propose](MoveContext& c) {
-		auto p = inner(c);
-		if (p) p->logReverse = 0;
-		return p;
-	};
+	inference::RandomScan wrong = test::gridScanWithoutDeathReverse(pr.grid);
 	const ChiSquared dropped = runChain(pr, wrong, exact, n, 1);
 	EXPECT_LT(dropped.p, 1e-3) << "chi2 " << dropped.statistic << " df " << dropped.df;
 }
