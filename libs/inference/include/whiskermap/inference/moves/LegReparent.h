@@ -18,9 +18,10 @@ class LegReparent
 	std::optional<Proposal> propose(MoveContext& ctx, model::Id l);
 	void finish(MoveContext& ctx, bool accepted);
 
-   private:
 	/** True if a corner of table t is within the parent gate of leg l's centre. */
 	static bool withinGate(const MoveContext& ctx, model::Id l, model::Id t);
+
+   private:
 
 	model::Id m_leg = model::NONE, m_to = model::NONE;
 	std::vector<model::Id> m_candidates;
