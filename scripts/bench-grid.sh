@@ -15,15 +15,16 @@
 # Usage: scripts/bench-grid.sh [BUILD_DIR] [WORK_DIR]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-$root/build}
+build=$(cd "${1:-$root/build}" && pwd)
 work=${2:-$root/out/bench-grid}
+mkdir -p "$work"; work=$(cd "$work" && pwd)
 steps=${STEPS:-882}
 sim=$build/apps/whisker-sim/whisker-sim export=$build/apps/whisker-export/whisker-export
 map=$build/apps/whisker-map/whisker-map eval=$build/apps/whisker-eval/whisker-eval
 slam=$build/apps/whisker-slam/whisker-slam
 shim=$build/tests/pf/libwhiskermap-test-fixed-seed.so maps=$build/libs/maps/libwhiskermap-maps.so
 data=$root/datasets/slam/paper_arena_action-sf
-mkdir -p "$work"; cd "$work"
+cd "$work"
 
 # The maps at the true poses: the dataset's run simulated again with exact odometry (same
 # truth, same sweeps), as rays (grid) and as whisker-map's object map.
@@ -34,6 +35,8 @@ mkdir -p "$work"; cd "$work"
 # The run: the dataset's log (noisy odometry), its first $steps sweeps, whiskers and rays.
 rawlog-edit --cut --to-index $((2 * steps - 1)) -i "$data.rawlog" -o run.rawlog -p "$build/libs/obs/libwhiskermap-obs.so" >/dev/null 2>&1 </dev/null
 "$export" -q -i run.rawlog --ranges run_ranges.rawlog
+# (--to-index keeps one pair more than asked: count what it kept)
+steps=$(( $(rawlog-edit --info -i run_ranges.rawlog 2>&1 </dev/null | sed -n 's/^Overall number of objects *: *\([0-9]*\).*/\1/p') / 2 ))
 { grep '^%' "${data}_ground_truth_robot_path.txt"; grep -v '^%' "${data}_ground_truth_robot_path.txt" | head -n "$steps"; } >truth.txt
 { grep '^%' "${data}_odometry_path.txt"; grep -v '^%' "${data}_odometry_path.txt" | head -n "$steps"; } >odometry.txt
 # pf-localization.ini's start box is for tests/pf/table_loop.path: move it to the lawnmower's
@@ -53,11 +56,8 @@ timed() {  # LOG CMD...: runs CMD (stdin closed, output to LOG), prints its wall
   local t0=$SECONDS; timeout 3600 "${@:2}" </dev/null >"$1" 2>&1 || { tail -5 "$1"; echo "FAILED: ${*:2}"; return 1; }
   echo "    ($((SECONDS - t0)) s)"
 }
-# rbpf-slam's log_estimated_path.txt (step x y z yaw pitch roll ...) in the truth's columns
-rbpf_path() {
-  grep -v '^%' truth.txt | awk '{ print $1 }' | paste -d' ' - <(grep -v '^%' "$1" | awk '{ print $2, $3, $5 }') |
-    awk 'NF == 4' >"$2"
-}
+# rbpf-slam's log_estimated_path.txt (step x y z yaw pitch roll timestamp) in the truth's columns
+rbpf_path() { awk '!/^%/ { print $8, $2, $3, $5 }' "$1" >"$2"; }
 
 echo "== $steps sweeps of $(basename "$data").rawlog"
 score "odometry alone" odometry.txt

@@ -22,6 +22,8 @@ data=$src/datasets/slam/paper_arena_action-sf
 "$export" -i "$data.rawlog" --ranges ranges.rawlog -q
 # the prefix: two rawlog entries (actions, sensory frame) per sweep
 rawlog-edit --cut --to-index $((2 * STEPS - 1)) -i ranges.rawlog -o run.rawlog >/dev/null 2>&1 </dev/null
+# (--to-index keeps one pair more than asked: count what it kept)
+STEPS=$(( $(rawlog-edit --info -i run.rawlog 2>&1 </dev/null | sed -n 's/^Overall number of objects *: *\([0-9]*\).*/\1/p') / 2 ))
 code=0
 WHISKERMAP_PF_SEED=${WHISKERMAP_PF_SEED:-1} LD_PRELOAD="${WHISKERMAP_TOOL_PRELOAD:+$WHISKERMAP_TOOL_PRELOAD:}$shim" \
   timeout "${WHISKERMAP_TOOL_TIMEOUT:-300}" pf-localization "$src/config/grid-pf-localization.ini" run.rawlog \
