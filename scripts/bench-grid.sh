@@ -33,7 +33,7 @@ cd "$work"
 "$export" -q -i exact.rawlog --ranges-simplemap grid.simplemap
 "$map" -q -i exact.rawlog -o objmap --simplemap
 # The run: the dataset's log (noisy odometry), its first $steps sweeps, whiskers and rays.
-rawlog-edit --cut --to-index $((2 * steps - 1)) -i "$data.rawlog" -o run.rawlog -p "$build/libs/obs/libwhiskermap-obs.so" >/dev/null 2>&1 </dev/null
+rawlog-edit -w --cut --to-index $((2 * steps - 1)) -i "$data.rawlog" -o run.rawlog -p "$build/libs/obs/libwhiskermap-obs.so" >/dev/null 2>&1 </dev/null
 "$export" -q -i run.rawlog --ranges run_ranges.rawlog
 # (--to-index keeps one pair more than asked: count what it kept)
 steps=$(( $(rawlog-edit --info -i run_ranges.rawlog 2>&1 </dev/null | sed -n 's/^Overall number of objects *: *\([0-9]*\).*/\1/p') / 2 ))
