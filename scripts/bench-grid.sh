@@ -37,8 +37,8 @@ rawlog-edit -w --cut --to-index $((2 * steps - 1)) -i "$data.rawlog" -o run.rawl
 "$export" -q -i run.rawlog --ranges run_ranges.rawlog
 # (--to-index keeps one pair more than asked: count what it kept)
 steps=$(( $(rawlog-edit --info -i run_ranges.rawlog 2>&1 </dev/null | sed -n 's/^Overall number of objects *: *\([0-9]*\).*/\1/p') / 2 ))
-{ grep '^%' "${data}_ground_truth_robot_path.txt"; grep -v '^%' "${data}_ground_truth_robot_path.txt" | head -n "$steps"; } >truth.txt
-{ grep '^%' "${data}_odometry_path.txt"; grep -v '^%' "${data}_odometry_path.txt" | head -n "$steps"; } >odometry.txt
+awk -v n="$steps" '/^%/ || ++k <= n' "${data}_ground_truth_robot_path.txt" >truth.txt
+awk -v n="$steps" '/^%/ || ++k <= n' "${data}_odometry_path.txt" >odometry.txt
 # pf-localization.ini's start box is for tests/pf/table_loop.path: move it to the lawnmower's
 # start, (0.25, 0.25, -5.2 deg), the same box as grid-pf-localization.ini's.
 sed -n '/^init_PDF_m/p' "$root/config/grid-pf-localization.ini" >box.txt

@@ -12,8 +12,9 @@ n=$(printf '%s\n' "$est" | grep -c . || true)
 total=$(grep -vc '^%' "$gt")
 [[ $n -gt 0 ]] || { echo "pf-path: $log: no 'PDF estimation' line" >&2; exit 1; }
 [[ $n -le $total ]] || { echo "pf-path: $log: $n estimates, but $gt holds $total poses" >&2; exit 1; }
-{ grep '^%' "$gt"; grep -v '^%' "$gt" | head -n "$n"; } >"$gt_out"
-grep -v '^%' "$gt" | head -n "$n" | awk '{ print $1 }' |
+# (awk, not grep | head: under pipefail head's early exit can fail the pipeline)
+awk -v n="$n" '/^%/ || ++k <= n' "$gt" >"$gt_out"
+awk -v n="$n" '!/^%/ && ++k <= n { print $1 }' "$gt" |
   paste -d' ' - <(printf '%s\n' "$est") |
   awk 'BEGIN { print "% pf-localization estimate, one line per sweep"; print "% timestamp(s)  x(m)  y(m)  yaw(rad)" }
        { printf "%s %.9f %.9f %.9f\n", $1, $2, $3, $4 * 3.14159265358979 / 180 }' >"$est_out"

@@ -10,7 +10,7 @@
 set -euo pipefail
 shim=$1 sim=$2 export=$3 eval=$4 src=$5 work=$6
 STEPS=${WHISKERMAP_GRID_STEPS:-300}
-MAX_ATE=0.10   # metres, raw ATE RMSE over the prefix (measured: doc/slam.md)
+MAX_ATE=0.06   # metres, raw ATE RMSE over the prefix: 2.6x the worst of filter seeds 1-4 (0.023 m; doc/slam.md)
 
 command -v pf-localization >/dev/null || { echo "FAIL: pf-localization not installed (mrpt-apps)"; exit 1; }
 command -v rawlog-edit >/dev/null || { echo "FAIL: rawlog-edit not installed (mrpt-apps)"; exit 1; }
@@ -33,8 +33,9 @@ grep -q "COccupancyGridMap2D" pf.log || { echo "FAIL: the log shows no occupancy
 "$src/scripts/pf-path.sh" pf.log "${data}_ground_truth_robot_path.txt" est.txt truth.txt
 n=$(grep -vc '^%' est.txt)
 [[ $n -eq $STEPS ]] || { echo "FAIL: $n estimates for $STEPS sweeps"; exit 1; }
-{ grep '^%' "${data}_odometry_path.txt"; grep -v '^%' "${data}_odometry_path.txt" | head -n "$STEPS"; } >odo.txt
-ate() { "$eval" --path "$1" --truth truth.txt --json | sed -n 's/.*"ate_rmse_m": *\([-0-9.e]*\).*/\1/p' | head -1; }
+# (awk, not grep | head: under pipefail head's early exit can fail the pipeline)
+awk -v n="$STEPS" '/^%/ || ++k <= n' "${data}_odometry_path.txt" >odo.txt
+ate() { "$eval" --path "$1" --truth truth.txt --json | sed -n 's/.*"ate_rmse_m": *\([-0-9.e]*\).*/\1/p' | tail -1; }
 grid=$(ate est.txt) odo=$(ate odo.txt)
 echo "first $STEPS sweeps: ATE RMSE (raw) on the grid $grid m, odometry $odo m (limit $MAX_ATE m)"
 awk -v a="$odo" -v m="$MAX_ATE" 'BEGIN { exit !(a > m) }' ||
