@@ -39,9 +39,14 @@ SimpleMapWriter::SimpleMapWriter(const std::string& path, uint32_t entries) : m_
 
 void SimpleMapWriter::add(const mrpt::poses::CPose2D& pose, const mrpt::obs::CObservation::Ptr& obs)
 {
-	if (m_written == m_expected) throw core::Error(m_path + ": more entries than announced");
 	mrpt::obs::CSensoryFrame sf;
 	sf.insert(obs);
+	add(pose, sf);
+}
+
+void SimpleMapWriter::add(const mrpt::poses::CPose2D& pose, const mrpt::obs::CSensoryFrame& sf)
+{
+	if (m_written == m_expected) throw core::Error(m_path + ": more entries than announced");
 	const mrpt::poses::CPose3DPDFGaussian pdf{mrpt::poses::CPose3D(pose)};
 	auto arch = mrpt::serialization::archiveFrom(m_out);
 	arch << pdf << sf;

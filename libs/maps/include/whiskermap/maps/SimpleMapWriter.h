@@ -1,6 +1,7 @@
 #pragma once
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservation.h>
+#include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <cstdint>
@@ -20,6 +21,8 @@ class SimpleMapWriter
 	/** One entry: the robot pose (as a 3-D Gaussian with zero covariance) and a sensory
 	 *  frame holding `obs`. */
 	void add(const mrpt::poses::CPose2D& pose, const mrpt::obs::CObservation::Ptr& obs);
+	/** One entry holding a whole sensory frame. */
+	void add(const mrpt::poses::CPose2D& pose, const mrpt::obs::CSensoryFrame& frame);
 	/** Ends the file; throws core::Error if fewer or more entries were added than announced. */
 	void close();
 
