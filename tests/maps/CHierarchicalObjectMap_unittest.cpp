@@ -8,11 +8,13 @@
 #include <whiskermap/core/Error.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/maps/MapConfig.h>
+#include <whiskermap/model/ObjectCatalogue.h>
 #include <whiskermap/obs/RawlogReader.h>
 #include <whiskermap/world/World.h>
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 using namespace whiskermap;
@@ -58,7 +60,7 @@ std::string fingerprint(const CHierarchicalObjectMap& m)
 	std::ostringstream o;
 	o.precision(17);
 	for (model::Id t = 0; t < s.tableIdBound(); t++)
-		if (s.hasTable(t)) o << "T" << s.table(t).x << "," << s.table(t).y << "," << s.table(t).theta << "," << s.existence(t) << ";";
+		if (s.hasTable(t)) o << "T" << s.table(t).x << "," << s.table(t).y << "," << s.table(t).theta << "," << s.existence(t) << "," << s.table(t).cls << ";";
 	for (model::Id l = 0; l < s.legIdBound(); l++)
 		if (s.hasLeg(l))
 			o << "L" << s.leg(l).x << "," << s.leg(l).y << "," << s.leg(l).theta << "," << s.leg(l).parent << ","
@@ -250,6 +252,31 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheOptionalModelKeys)
 	ASSERT_TRUE(b);
 	EXPECT_EQ(b->modelParams, a.modelParams);
 	EXPECT_FALSE(b->modelParams == model::ModelParams());
+}
+
+// The object catalogue and each lasting table's class survive the round trip (version 3), and
+// the reloaded map continues exactly as the original (the office, where classes differ).
+TEST(CHierarchicalObjectMap, SerializationKeepsTheObjectClasses)
+{
+	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/office/default.rawlog");
+	CHierarchicalObjectMap a;
+	a.modelParams.classes = model::ObjectCatalogue::load(SRC + "/config/objects.ini");
+	const size_t half = rawlog.sweeps.size() / 2;
+	for (size_t i = 0; i < half; i++) a.insertObservation(*rawlog.sweeps[i].obs, mrpt::poses::CPose3D(rawlog.sweeps[i].robotPose));
+	std::set<std::string> classes;
+	for (const auto& o : a.mapObjects()) classes.insert(o.table.object_class.str());
+	EXPECT_GE(classes.size(), 2u);  // tables of more than one class to keep
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << a;
+	buf.Seek(0);
+	auto b = std::dynamic_pointer_cast<CHierarchicalObjectMap>(arch.ReadObject());
+	ASSERT_TRUE(b);
+	EXPECT_EQ(b->modelParams, a.modelParams);
+	EXPECT_EQ(fingerprint(*b), fingerprint(a));
+	for (size_t i = half; i < half + 100 && i < rawlog.sweeps.size(); i++)
+		for (auto* m : {&a, b.get()}) m->insertObservation(*rawlog.sweeps[i].obs, mrpt::poses::CPose3D(rawlog.sweeps[i].robotPose));
+	EXPECT_EQ(fingerprint(*b), fingerprint(a));
 }
 
 // The per-pose mode's consolidation survives the round trip too (objects and records).

@@ -96,10 +96,12 @@ class LastingState
 	uint64_t nextSeq() const { return m_seq; }
 
 	/** Rebuilds a state from its parts (deserialization): tables with their existence, legs
-	 *  (parent = index into `tables`) with evidence, contacts (leg = index into `legs`). */
+	 *  (parent = index into `tables`) with evidence, contacts (leg = index into `legs`);
+	 *  `model` gives the tables' sizes (their classes). */
 	void restore(
 		const std::vector<Table>& tables, const std::vector<double>& existence, const std::vector<Leg>& legs,
-		const std::vector<LegEvidence>& evidence, const std::vector<Contact>& contacts, uint64_t seq);
+		const std::vector<LegEvidence>& evidence, const std::vector<Contact>& contacts, uint64_t seq,
+		const ModelParams& model);
 	void clear();
 
    private:
