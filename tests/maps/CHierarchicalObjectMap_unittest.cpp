@@ -70,6 +70,16 @@ std::string fingerprint(const CHierarchicalObjectMap& m)
 	return o.str();
 }
 
+/** `a` written to a stream and read back (null if it did not read back as a map). */
+std::shared_ptr<CHierarchicalObjectMap> reloaded(const CHierarchicalObjectMap& a)
+{
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << a;
+	buf.Seek(0);
+	return std::dynamic_pointer_cast<CHierarchicalObjectMap>(arch.ReadObject());
+}
+
 /** The lasting state as a sorted list of its tables and legs (a leg names its parent by the
  *  parent's position): independent of store ids, which a reload renumbers densely. */
 std::vector<std::string> contentOf(const CHierarchicalObjectMap& m)
@@ -267,11 +277,7 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheOptionalModelKeys)
 	a.modelParams.shaft_noise = a.modelParams.free_space = true;
 	a.modelParams.sigma_across = 0.003;
 	a.modelParams.free_space_p_miss = 0.2;
-	mrpt::io::CMemoryStream buf;
-	auto arch = mrpt::serialization::archiveFrom(buf);
-	arch << a;
-	buf.Seek(0);
-	auto b = std::dynamic_pointer_cast<CHierarchicalObjectMap>(arch.ReadObject());
+	const auto b = reloaded(a);
 	ASSERT_TRUE(b);
 	EXPECT_EQ(b->modelParams, a.modelParams);
 	EXPECT_FALSE(b->modelParams == model::ModelParams());
@@ -289,11 +295,7 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheObjectClasses)
 	std::set<std::string> classes;
 	for (const auto& o : a.mapObjects()) classes.insert(o.table.object_class.str());
 	EXPECT_GE(classes.size(), 2u);  // tables of more than one class to keep
-	mrpt::io::CMemoryStream buf;
-	auto arch = mrpt::serialization::archiveFrom(buf);
-	arch << a;
-	buf.Seek(0);
-	auto b = std::dynamic_pointer_cast<CHierarchicalObjectMap>(arch.ReadObject());
+	const auto b = reloaded(a);
 	ASSERT_TRUE(b);
 	EXPECT_EQ(b->modelParams, a.modelParams);
 	EXPECT_TRUE(contentOf(*b) == contentOf(a));  // (not EXPECT_EQ: pages of output on failure)
