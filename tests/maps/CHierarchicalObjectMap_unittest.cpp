@@ -132,6 +132,18 @@ TEST(CHierarchicalObjectMap, IsCreatedByNameFromTheShippedIni)
 	EXPECT_DOUBLE_EQ(map->modelParams.texture, 0.7);
 }
 
+TEST(CHierarchicalObjectMap, OfficeConfigNamesTheObjectCatalogue)
+{
+	// office-map.ini's `objects = objects.ini` is read relative to the config itself
+	mrpt::maps::CMultiMetricMap mm(maps::MapConfig::load(SRC + "/config/office-map.ini"));
+	auto map = mm.mapByClass<CHierarchicalObjectMap>();
+	ASSERT_TRUE(map);
+	EXPECT_EQ(map->modelParams.classes, model::ObjectCatalogue::load(SRC + "/config/objects.ini"));
+	EXPECT_EQ(map->modelParams.classCount(), 4);
+	mrpt::maps::CMultiMetricMap plain(maps::MapConfig::load(CONFIG));
+	EXPECT_TRUE(plain.mapByClass<CHierarchicalObjectMap>()->modelParams.classes.empty());
+}
+
 TEST(CHierarchicalObjectMap, ConfigMistakesFailLoudly)
 {
 	const std::string ok = "[MetricMap]\nhierarchicalObjectMap_count=1\n";
