@@ -17,8 +17,8 @@ namespace whiskermap::test
 class MoveBoard
 {
    public:
-	MoveBoard(uint64_t seed, bool withTable)
-		: bb(P), ctx(bb, P, S, rng, acceptance), m_random(seed)
+	MoveBoard(uint64_t seed, bool withTable, const model::ModelParams& params = {})
+		: P(params), bb(P), ctx(bb, P, S, rng, acceptance), m_random(seed)
 	{
 		ctx.result = &result;
 		rng.seed(seed);

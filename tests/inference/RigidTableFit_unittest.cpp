@@ -61,7 +61,7 @@ model::LastingState state(const model::ModelParams& p, const std::vector<obs::Sh
 			kept.push_back({s[i], static_cast<model::Id>(leg), i});
 	}
 	model::LastingState st(p);
-	st.restore({off}, {1.0}, {}, legs, evidence, kept, s.size());
+	st.restore({off}, {1.0}, {}, legs, evidence, kept, s.size(), p);
 	return st;
 }
 
@@ -127,7 +127,7 @@ TEST(RigidTableFit, TableWithoutLegsKeepsItsPose)
 {
 	const model::ModelParams p;
 	model::LastingState st(p);
-	st.restore({TRUTH}, {1.0}, {}, {}, {}, {}, 0);
+	st.restore({TRUTH}, {1.0}, {}, {}, {}, {}, 0, p);
 	const model::Table fit = inference::fitRigidTable(st, 0, p);
 	EXPECT_EQ(fit.x, TRUTH.x);
 	EXPECT_EQ(fit.y, TRUTH.y);

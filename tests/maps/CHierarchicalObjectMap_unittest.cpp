@@ -8,11 +8,14 @@
 #include <whiskermap/core/Error.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/maps/MapConfig.h>
+#include <whiskermap/model/ObjectCatalogue.h>
 #include <whiskermap/obs/RawlogReader.h>
 #include <whiskermap/world/World.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 using namespace whiskermap;
@@ -58,13 +61,45 @@ std::string fingerprint(const CHierarchicalObjectMap& m)
 	std::ostringstream o;
 	o.precision(17);
 	for (model::Id t = 0; t < s.tableIdBound(); t++)
-		if (s.hasTable(t)) o << "T" << s.table(t).x << "," << s.table(t).y << "," << s.table(t).theta << "," << s.existence(t) << ";";
+		if (s.hasTable(t)) o << "T" << s.table(t).x << "," << s.table(t).y << "," << s.table(t).theta << "," << s.existence(t) << "," << s.table(t).cls << ";";
 	for (model::Id l = 0; l < s.legIdBound(); l++)
 		if (s.hasLeg(l))
 			o << "L" << s.leg(l).x << "," << s.leg(l).y << "," << s.leg(l).theta << "," << s.leg(l).parent << ","
 			  << s.evidence(l).count() << "," << s.contactsOf(l).size() << ";";
 	o << "C" << s.contactCount();
 	return o.str();
+}
+
+/** `a` written to a stream and read back (null if it did not read back as a map). */
+std::shared_ptr<CHierarchicalObjectMap> reloaded(const CHierarchicalObjectMap& a)
+{
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << a;
+	buf.Seek(0);
+	return std::dynamic_pointer_cast<CHierarchicalObjectMap>(arch.ReadObject());
+}
+
+/** The lasting state as a sorted list of its tables and legs (a leg names its parent by the
+ *  parent's position): independent of store ids, which a reload renumbers densely. */
+std::vector<std::string> contentOf(const CHierarchicalObjectMap& m)
+{
+	const auto& s = m.lastingMap().state();
+	std::vector<std::string> out;
+	auto str = [](double v) { std::ostringstream o; o.precision(12); o << v; return o.str(); };
+	for (model::Id t = 0; t < s.tableIdBound(); t++)
+		if (s.hasTable(t))
+			out.push_back("T" + str(s.table(t).x) + "," + str(s.table(t).y) + "," + str(s.table(t).theta) + "," +
+						  str(s.existence(t)) + "," + std::to_string(s.table(t).cls));
+	for (model::Id l = 0; l < s.legIdBound(); l++)
+		if (s.hasLeg(l))
+		{
+			const model::Leg& g = s.leg(l);
+			const std::string parent = g.parent == model::NONE ? "-" : str(s.table(g.parent).x) + "," + str(s.table(g.parent).y);
+			out.push_back("L" + str(g.x) + "," + str(g.y) + "," + str(g.wx) + "," + parent + "," + std::to_string(s.contactsExplained(l)));
+		}
+	std::sort(out.begin(), out.end());
+	return out;
 }
 
 std::string configError(const std::string& text)
@@ -95,6 +130,18 @@ TEST(CHierarchicalObjectMap, IsCreatedByNameFromTheShippedIni)
 	EXPECT_DOUBLE_EQ(map->likelihoodOptions.min_existence, 0.5);
 	EXPECT_EQ(map->likelihoodOptions.min_support, 3u);
 	EXPECT_DOUBLE_EQ(map->modelParams.texture, 0.7);
+}
+
+TEST(CHierarchicalObjectMap, OfficeConfigNamesTheObjectCatalogue)
+{
+	// office-map.ini's `objects = objects.ini` is read relative to the config itself
+	mrpt::maps::CMultiMetricMap mm(maps::MapConfig::load(SRC + "/config/office-map.ini"));
+	auto map = mm.mapByClass<CHierarchicalObjectMap>();
+	ASSERT_TRUE(map);
+	EXPECT_EQ(map->modelParams.classes, model::ObjectCatalogue::load(SRC + "/config/objects.ini"));
+	EXPECT_EQ(map->modelParams.classCount(), 4);
+	mrpt::maps::CMultiMetricMap plain(maps::MapConfig::load(CONFIG));
+	EXPECT_TRUE(plain.mapByClass<CHierarchicalObjectMap>()->modelParams.classes.empty());
 }
 
 TEST(CHierarchicalObjectMap, ConfigMistakesFailLoudly)
@@ -242,14 +289,34 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheOptionalModelKeys)
 	a.modelParams.shaft_noise = a.modelParams.free_space = true;
 	a.modelParams.sigma_across = 0.003;
 	a.modelParams.free_space_p_miss = 0.2;
-	mrpt::io::CMemoryStream buf;
-	auto arch = mrpt::serialization::archiveFrom(buf);
-	arch << a;
-	buf.Seek(0);
-	auto b = std::dynamic_pointer_cast<CHierarchicalObjectMap>(arch.ReadObject());
+	const auto b = reloaded(a);
 	ASSERT_TRUE(b);
 	EXPECT_EQ(b->modelParams, a.modelParams);
 	EXPECT_FALSE(b->modelParams == model::ModelParams());
+}
+
+// The object catalogue and each lasting table's class survive the round trip (version 3), and
+// the reloaded map continues exactly as the original (the office, where classes differ).
+TEST(CHierarchicalObjectMap, SerializationKeepsTheObjectClasses)
+{
+	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/office/default.rawlog");
+	CHierarchicalObjectMap a;
+	a.modelParams.classes = model::ObjectCatalogue::load(SRC + "/config/objects.ini");
+	const size_t half = rawlog.sweeps.size() / 2;
+	for (size_t i = 0; i < half; i++) a.insertObservation(*rawlog.sweeps[i].obs, mrpt::poses::CPose3D(rawlog.sweeps[i].robotPose));
+	std::set<std::string> classes;
+	for (const auto& o : a.mapObjects()) classes.insert(o.table.object_class.str());
+	EXPECT_GE(classes.size(), 2u);  // tables of more than one class to keep
+	const auto b = reloaded(a);
+	ASSERT_TRUE(b);
+	EXPECT_EQ(b->modelParams, a.modelParams);
+	EXPECT_TRUE(contentOf(*b) == contentOf(a));  // (not EXPECT_EQ: pages of output on failure)
+	std::set<std::string> reloaded;
+	for (const auto& o : b->mapObjects()) reloaded.insert(o.table.object_class.str());
+	EXPECT_EQ(reloaded, classes);
+	for (size_t i = half; i < half + 100 && i < rawlog.sweeps.size(); i++)
+		for (auto* m : {&a, b.get()}) m->insertObservation(*rawlog.sweeps[i].obs, mrpt::poses::CPose3D(rawlog.sweeps[i].robotPose));
+	EXPECT_TRUE(contentOf(*b) == contentOf(a));
 }
 
 // The per-pose mode's consolidation survives the round trip too (objects and records).

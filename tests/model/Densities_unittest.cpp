@@ -175,3 +175,38 @@ TEST(Densities, ShapeletGivenLegWithShaftNoiseByHand)
 	EXPECT_NEAR(logShapeletGivenLeg(s, l, p), 3.0 - 1.0, 1e-9);
 	EXPECT_NEAR(contactVariance(s, 1, 0, p), 1e-4, 1e-15);
 }
+
+// Object classes (issue 11): eq. 4 with the class prior, the corners (eqs. 5-6) and the
+// footprint (eq. 16) at the class's size, eq. 6's leg width against the class's. Hand values.
+TEST(Densities, TheClassSetsPriorCornersFootprintAndLegWidth)
+{
+	ModelParams p;  // c_T = 1e-2, sigma_w = 0.01, alpha_L = 7e3
+	ObjectClass table, chair;
+	table.prior = 0.75;
+	chair.name = chair.label = "chair", chair.length = chair.width = 0.42, chair.leg_width = 0.03, chair.texture = 0.5;
+	chair.prior = 0.25;
+	const ModelParams none = p;
+	p.classes = {table, chair};
+	Table t{1, 2, 0, 0.03, 0.5};
+	t.cls = 1;
+	EXPECT_NEAR(logTablePrior(t, p), -4.605170186 - 1.386294361, 1e-9);  // log 1e-2 + log 0.25
+	EXPECT_EQ(logTablePrior(t, none), logTablePrior(none));  // no catalogue: exactly c_T
+	double x = 0, y = 0;
+	tableCorner(t, 0, p, x, y);
+	EXPECT_NEAR(x, 1.21, 1e-12);
+	EXPECT_NEAR(y, 2.21, 1e-12);
+	tableCorner(t, 2, p, x, y);
+	EXPECT_NEAR(x, 0.79, 1e-12);
+	EXPECT_NEAR(y, 1.79, 1e-12);
+	EXPECT_NEAR(tableRect(t, p).hx, 0.21, 1e-12);
+	Leg l;
+	l.x = 1.21, l.y = 2.21, l.theta = 0, l.wx = l.wy = 0.03, l.texture = 0.5;
+	EXPECT_NEAR(logLegGivenTable(l, t, p).logDensity, std::log(7e3), 1e-9);  // at its corner: Delta = 0
+	l.wx = l.wy = 0.05;  // a 5 cm leg under a 3 cm chair: 2 (0.02 / 0.01)^2 = 8 nats
+	EXPECT_NEAR(logLegGivenTable(l, t, p).logDensity, std::log(7e3) - 8, 1e-9);
+	t.cls = 0;  // the same pose as a 1.0 x 0.6 table
+	tableCorner(t, 0, p, x, y);
+	EXPECT_NEAR(x, 1.5, 1e-12);
+	EXPECT_NEAR(y, 2.3, 1e-12);
+	EXPECT_NEAR(logTablePrior(t, p), -4.605170186 + std::log(0.75), 1e-9);
+}

@@ -178,8 +178,9 @@ std::string MapOutputs::finish(double wallSeconds)
 	std::vector<world::Table> mapped;
 	for (const auto& o : objects) mapped.push_back(o.table);
 	const auto candidates = m_map.candidateObjects();
-	maps::MapCsv::writeObjects(m_out.path("map_tables.csv"), objects);
-	maps::MapCsv::writeObjects(m_out.path("map_candidates.csv"), candidates);
+	const bool withClass = !m_map.modelParams.classes.empty();
+	maps::MapCsv::writeObjects(m_out.path("map_tables.csv"), objects, withClass);
+	maps::MapCsv::writeObjects(m_out.path("map_candidates.csv"), candidates, withClass);
 
 	const std::string source = std::filesystem::path(m_s.input).filename().string();
 	if (m_perPose)
@@ -212,7 +213,7 @@ std::string MapOutputs::finish(double wallSeconds)
 	if (m_s.world)
 	{
 		eval::EvalReport r;
-		r.map = eval::MapEvaluation::compute(m_s.world->tables, mapped, r.options);
+		r.map = eval::MapEvaluation::compute(m_s.world->tables, mapped, r.options, withClass);
 		if (m_eval) r.perPose = m_eval->result();
 		r.identifiability = m_ident->result();
 		metricsJson = r.toJson();

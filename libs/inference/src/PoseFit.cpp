@@ -18,9 +18,8 @@ double sq(double v) { return v * v; }
 
 void addCentreEquations(
 	const model::ModelParams& p, const obs::Shapelet* const* s, size_t n, double theta,
-	const model::LegEvidence* evidence, CentreEquations& eq)
+	const model::LegEvidence* evidence, CentreEquations& eq, double w)
 {
-	const double w = p.leg_width;
 	for (size_t i = 0; i < n; i++)
 	{
 		const double f = s[i]->normal - core::angleDiff(s[i]->normal, theta, M_PI_2);
@@ -38,7 +37,7 @@ model::Leg fitLeg(
 	const model::ModelParams& p, const obs::Shapelet* const* s, size_t n, const model::Table* t, double qx,
 	double qy, double pull, const model::LegEvidence* evidence)
 {
-	const double w = p.leg_width;
+	const double w = t ? t->leg_width : p.leg_width;  // a leg of a table has its class's leg width
 	double evWeight = 0;
 	const bool folded = evidence && !evidence->empty();
 	const double evYaw = folded ? evidence->meanYaw(p, evWeight) : 0;
@@ -60,7 +59,7 @@ model::Leg fitLeg(
 	}
 	// Centre: each contact on the line of its face (outward normal u), plus the pull.
 	CentreEquations eq{pull, 0, pull, pull * qx, pull * qy};
-	addCentreEquations(p, s, n, theta, evidence, eq);
+	addCentreEquations(p, s, n, theta, evidence, eq, w);
 	const auto& [a11, a12, a22, b1, b2] = eq;
 	const double det = a11 * a22 - a12 * a12;
 	double px = (a22 * b1 - a12 * b2) / det, py = (a11 * b2 - a12 * b1) / det;

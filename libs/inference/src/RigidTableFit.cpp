@@ -25,16 +25,18 @@ model::Table fitRigidTable(const model::LastingState& s, model::Id t, const mode
 	if (s.legsOf(t).empty()) return best;
 	// Turns pivot about the legs' mean corner, so that a turn barely moves the touched legs
 	// as a whole and the search's axes are nearly independent.
+	model::Table origin;  // the table's frame
+	origin.cls = best.cls;
 	double ox = 0, oy = 0, n = 0;
 	for (const model::Id l : s.legsOf(t))
 	{
 		if (s.leg(l).corner < 0) continue;
 		double cx = 0, cy = 0;
-		model::tableCorner(model::Table{}, s.leg(l).corner, p, cx, cy);
+		model::tableCorner(origin, s.leg(l).corner, p, cx, cy);
 		ox += cx, oy += cy, n++;
 	}
 	if (n > 0) ox /= n, oy /= n;  // pivot in the table frame
-	const double reach = std::hypot(p.table_length, p.table_width) / 2;  // a turn moves corners at most this much
+	const double reach = std::hypot(p.lengthOf(best.cls), p.widthOf(best.cls)) / 2;  // a turn moves corners at most this much
 	auto turned = [&](model::Table c, double d) {
 		const double c0 = std::cos(c.theta), s0 = std::sin(c.theta), c1 = std::cos(c.theta + d), s1 = std::sin(c.theta + d);
 		c.x += (c0 - c1) * ox - (s0 - s1) * oy;  // the pivot stays where it was

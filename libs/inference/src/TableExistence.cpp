@@ -18,13 +18,15 @@ using model::Table;
 
 namespace
 {
-/** Two tables are the same hypothesis when their centres agree within a quarter of the
- *  table's width and their yaws (mod 180 deg) within 15 degrees: distinct hypotheses on the
+/** Two tables are the same hypothesis when they have the same class and their centres agree
+ *  within a quarter of the class's width and their yaws (mod 180 deg; mod 90 deg for a square class) within 15 degrees: distinct hypotheses on the
  *  same legs (mirror images, other corners) are at least half a width or 60 degrees apart. */
 bool same(const Table& a, const Table& b, const model::ModelParams& p)
 {
-	return std::hypot(a.x - b.x, a.y - b.y) <= p.table_width / 4 &&
-		   std::abs(core::angleDiff(a.theta, b.theta, M_PI)) <= core::deg2rad(15);
+	// a square class (a chair) is the same object turned by 90 degrees: yaw modulo 90 degrees
+	const double period = p.lengthOf(a.cls) == p.widthOf(a.cls) ? M_PI_2 : M_PI;
+	return a.cls == b.cls && std::hypot(a.x - b.x, a.y - b.y) <= p.widthOf(a.cls) / 4 &&
+		   std::abs(core::angleDiff(a.theta, b.theta, period)) <= core::deg2rad(15);
 }
 }  // namespace
 

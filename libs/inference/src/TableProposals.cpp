@@ -26,12 +26,13 @@ double removeTableAndOrphans(model::Blackboard& bb, Id table, std::vector<Id>& o
 	return logOdds;
 }
 
-Table tableWithLegAt(const model::ModelParams& p, const Leg& leg, int corner, double turn)
+Table tableWithLegAt(const model::ModelParams& p, const Leg& leg, int corner, double turn, int cls)
 {
 	Table t;
 	t.theta = leg.theta + turn;
-	t.leg_width = p.leg_width;
-	t.texture = p.texture;
+	t.cls = cls;
+	t.leg_width = p.legWidthOf(cls);
+	t.texture = p.textureOf(cls);
 	double cx = 0, cy = 0;  // the corner of a table centred at the origin
 	model::tableCorner(t, corner, p, cx, cy);
 	t.x = leg.x - cx;
@@ -41,16 +42,21 @@ Table tableWithLegAt(const model::ModelParams& p, const Leg& leg, int corner, do
 
 void tablesForPairs(const model::Blackboard& bb, Id l, std::vector<Table>& out)
 {
+	for (int k = 0; k < bb.params().classCount(); k++) tablesForPairs(bb, l, k, out);
+}
+
+void tablesForPairs(const model::Blackboard& bb, Id l, int cls, std::vector<Table>& out)
+{
 	const model::ModelParams& p = bb.params();
-	const double gate = p.parent_gate, diagonal = std::hypot(p.table_length, p.table_width);
-	Table frame = tableWithLegAt(p, bb.leg(l), 0, 0);
+	const double gate = p.parent_gate, diagonal = std::hypot(p.lengthOf(cls), p.widthOf(cls));
+	Table frame = tableWithLegAt(p, bb.leg(l), 0, 0, cls);
 	frame.x = frame.y = frame.theta = 0;
 	double cx[4], cy[4];
 	model::tableCorners(frame, p, cx, cy);
 	bb.forEachLegNear(bb.leg(l).x, bb.leg(l).y, diagonal + 2 * gate, [&](Id o) {
 		// A partner whose texture is more than 5 sigma from the table's costs it over 25 nats
 		// (eq. 6): not worth proposing.
-		if (std::abs(bb.leg(o).texture - p.texture) > 5 * p.sigma_tau) return;
+		if (std::abs(bb.leg(o).texture - frame.texture) > 5 * p.sigma_tau) return;
 		const model::Leg* pair[2] = {&bb.leg(l), &bb.leg(o)};
 		const double d = std::hypot(pair[1]->x - pair[0]->x, pair[1]->y - pair[0]->y);
 		// l at corner 0 or 1, o at another: with the 180 deg symmetry these are all the tables

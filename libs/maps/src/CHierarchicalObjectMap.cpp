@@ -34,8 +34,8 @@ CHierarchicalObjectMap::CHierarchicalObjectMap() = default;
 world::Table CHierarchicalObjectMap::toWorldTable(const model::Table& t) const
 {
 	return world::Table{
-		t.x, t.y, core::angleDiff(t.theta, 0, M_PI), modelParams.table_length, modelParams.table_width,
-		t.leg_width, t.texture};
+		t.x, t.y, core::angleDiff(t.theta, 0, M_PI), modelParams.lengthOf(t.cls), modelParams.widthOf(t.cls),
+		t.leg_width, t.texture, world::ObjectClass(modelParams.nameOf(t.cls))};
 }
 
 // ---------------------------------------------------------------- the map as used
@@ -285,8 +285,9 @@ double CHierarchicalObjectMap::internal_computeObservationLikelihood(
 
 void CHierarchicalObjectMap::saveMetricMapRepresentationToFile(const std::string& prefix) const
 {
-	MapCsv::writeObjects(prefix + "_map_tables.csv", mapObjects());
-	MapCsv::writeObjects(prefix + "_map_candidates.csv", candidateObjects());
+	const bool withClass = !modelParams.classes.empty();
+	MapCsv::writeObjects(prefix + "_map_tables.csv", mapObjects(), withClass);
+	MapCsv::writeObjects(prefix + "_map_candidates.csv", candidateObjects(), withClass);
 	if (!lasting()) MapCsv::writePerPose(prefix + "_per_pose_tables.csv", m_poses);
 }
 

@@ -3,6 +3,7 @@
 // without a known shaft; versions before 3 with the lasting tables reported at their own poses.
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
+#include <whiskermap/model/ObjectCatalogue.h>
 
 using mrpt::serialization::CArchive;
 
@@ -74,11 +75,23 @@ void writeLasting(CArchive& out, const model::LastingState& s)
 	out << s.nextSeq();
 }
 
-void readLasting(CArchive& in, model::LastingState& s, uint8_t version)
+/** The parts of a lasting state as read; restored once the classes (version 3) are known. */
+struct LastingParts
 {
-	std::vector<model::Table> tables(in.ReadAs<uint32_t>());
-	std::vector<double> existence(tables.size());
-	std::vector<model::Table> reported;  // versions before 3: the tables' own poses
+	std::vector<model::Table> tables;
+	std::vector<double> existence;
+	std::vector<model::Table> reported;  // versions before 3: none (the tables' own poses)
+	std::vector<model::Leg> legs;
+	std::vector<model::LegEvidence> evidence;
+	std::vector<model::LastingState::Contact> contacts;
+	uint64_t seq = 0;
+};
+
+void readLasting(CArchive& in, LastingParts& parts, uint8_t version)
+{
+	auto& [tables, existence, reported, legs, evidence, contacts, seq] = parts;
+	tables.resize(in.ReadAs<uint32_t>());
+	existence.resize(tables.size());
 	for (size_t i = 0; i < tables.size(); i++)
 	{
 		auto& t = tables[i];
@@ -87,8 +100,8 @@ void readLasting(CArchive& in, model::LastingState& s, uint8_t version)
 		reported.push_back(t);
 		in >> reported.back().x >> reported.back().y >> reported.back().theta;
 	}
-	std::vector<model::Leg> legs(in.ReadAs<uint32_t>());
-	std::vector<model::LegEvidence> evidence(legs.size());
+	legs.resize(in.ReadAs<uint32_t>());
+	evidence.resize(legs.size());
 	for (size_t i = 0; i < legs.size(); i++)
 	{
 		auto& g = legs[i];
@@ -104,7 +117,7 @@ void readLasting(CArchive& in, model::LastingState& s, uint8_t version)
 		in >> count;
 		evidence[i] = model::LegEvidence::fromStats(stats, count, known);
 	}
-	std::vector<model::LastingState::Contact> contacts(in.ReadAs<uint32_t>());
+	contacts.resize(in.ReadAs<uint32_t>());
 	for (auto& k : contacts)
 	{
 		read(in, k.shapelet, version);
@@ -114,9 +127,31 @@ void readLasting(CArchive& in, model::LastingState& s, uint8_t version)
 			THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (contact leg out of range)");
 		k.leg = leg;
 	}
-	uint64_t seq;
 	in >> seq;
-	s.restore(tables, existence, reported, legs, evidence, contacts, seq);
+}
+
+void writeClasses(CArchive& out, const model::ModelParams& m, const model::LastingState& s)
+{
+	out.WriteAs<uint32_t>(static_cast<uint32_t>(m.classes.size()));
+	for (const auto& c : m.classes)
+		out << c.name << c.label << c.length << c.width << c.leg_width << c.texture << c.size_sigma << c.prior;
+	for (model::Id t = 0; t < s.tableIdBound(); t++)
+		if (s.hasTable(t)) out.WriteAs<int32_t>(s.table(t).cls);
+}
+
+/** Version 3: the catalogue and the class of each lasting table (older streams: class 0). */
+void readClasses(CArchive& in, model::ModelParams& m, LastingParts& parts)
+{
+	m.classes.resize(in.ReadAs<uint32_t>());
+	if (m.classes.size() > model::ObjectCatalogue::MAX_CLASSES)
+		THROW_EXCEPTION("CHierarchicalObjectMap: corrupt stream (too many object classes)");
+	for (auto& c : m.classes) in >> c.name >> c.label >> c.length >> c.width >> c.leg_width >> c.texture >> c.size_sigma >> c.prior;
+	for (auto& t : parts.tables)
+	{
+		t.cls = in.ReadAs<int32_t>();
+		if (t.cls < 0 || t.cls >= m.classCount())
+			THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (table class out of range)");
+	}
 }
 }  // namespace
 
@@ -162,8 +197,10 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	writeLasting(out, m_lasting.state());
 	// Version 2: shaft noise (shapelets carry their shafts above) and free space.
 	out << m.shaft_noise << m.sigma_across << m.free_space << m.free_space_p_miss;
-	// Version 3: the lasting tables' reported poses (in writeLasting) and whether they are rigid fits.
+	// Version 3: the lasting tables' reported poses (in writeLasting) and whether they are
+	// rigid fits; the object catalogue and the lasting tables' classes.
 	out << l.rigid_pose;
+	writeClasses(out, m, m_lasting.state());
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -208,6 +245,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 			m_memory.add(memory);
 			for (size_t k = 0; k < inference::MOVE_COUNT; k++) in >> m_proposed[k] >> m_accepted[k];
 			insertionOptions.mode = TInsertionOptions::TMode::PerPose;  // version 0 knew no other
+			LastingParts lasting;
 			if (version >= 1)
 			{
 				const uint8_t mode = in.ReadAs<uint8_t>();
@@ -216,7 +254,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 				auto& l = insertionOptions.lasting;
 				in >> l.visit_radius >> l.contacts_per_leg >> l.unexplained_per_spot >> likelihoodOptions.min_existence;
 				for (auto& o : objs) in >> o.contacts >> o.legMask;
-				readLasting(in, m_lasting.state(), version);
+				readLasting(in, lasting, version);
 			}
 			const model::ModelParams defaults;  // versions 0 and 1 knew only the paper's eqs. 7 and 14
 			m.shaft_noise = defaults.shaft_noise, m.sigma_across = defaults.sigma_across;
@@ -224,6 +262,12 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 			if (version >= 2) in >> m.shaft_noise >> m.sigma_across >> m.free_space >> m.free_space_p_miss;
 			insertionOptions.lasting.rigid_pose = false;  // versions before 3 reported the tables' own poses
 			if (version >= 3) in >> insertionOptions.lasting.rigid_pose;
+			m.classes.clear();  // versions 0 to 2: one class, the known table
+			if (version >= 3) readClasses(in, m, lasting);
+			if (version >= 1)
+				m_lasting.state().restore(
+					lasting.tables, lasting.existence, lasting.reported, lasting.legs, lasting.evidence, lasting.contacts,
+					lasting.seq, m);
 			m_consolidator.setObjects(std::move(objs));
 			m_consolidator.setOptions(c);
 		}

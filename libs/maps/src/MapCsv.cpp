@@ -31,16 +31,19 @@ void writeTable(FILE* f, const world::Table& t)
 }
 }  // namespace
 
-void MapCsv::writeObjects(const std::string& path, const std::vector<TMappedObject>& objects)
+void MapCsv::writeObjects(const std::string& path, const std::vector<TMappedObject>& objects, bool withClass)
 {
-	writeFile(path, "id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs", [&](FILE* f) {
+	const char* header = withClass ? "id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs,class"
+								   : "id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs";
+	writeFile(path, header, [&](FILE* f) {
 		for (size_t i = 0; i < objects.size(); i++)
 		{
 			std::fprintf(f, "%zu,", i);
 			writeTable(f, objects[i].table);
 			std::fprintf(
-				f, ",%.4f,%llu,%u\n", objects[i].existence, static_cast<unsigned long long>(objects[i].contacts),
+				f, ",%.4f,%llu,%u", objects[i].existence, static_cast<unsigned long long>(objects[i].contacts),
 				objects[i].legs);
+			std::fprintf(f, withClass ? ",%s\n" : "\n", objects[i].table.object_class.str().c_str());
 		}
 	});
 }

@@ -53,7 +53,9 @@ void TableConsolidator::addPose(
 		{
 			const auto& o = m_objects[i].table;
 			const double d = std::hypot(o.x - t.x, o.y - t.y);
-			if (i < before && d <= bestDist &&
+			// the same class and size only (object catalogue; always so without one)
+			const bool sameClass = o.object_class == t.object_class && o.length == t.length && o.width == t.width;
+			if (i < before && d <= bestDist && sameClass &&
 				std::find(matched.begin(), matched.end(), i) == matched.end() &&
 				std::abs(core::angleDiff(o.yaw, t.yaw, M_PI)) <= m_opts.merge_angle)
 				best = i, bestDist = d;

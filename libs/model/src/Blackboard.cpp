@@ -10,14 +10,14 @@ namespace
 {
 /** Cell of the leg hashes: half a table length, so that the widest query (pair partners, a
  *  table diagonal away) spans a few cells and the narrow ones (overlaps, contacts) one to four. */
-double legCell(const ModelParams& p) { return std::max(4 * p.leg_width, p.table_length / 2); }
+double legCell(const ModelParams& p) { return std::max(4 * p.leg_width, p.maxLength() / 2); }
 }  // namespace
 
 Blackboard::Blackboard(const ModelParams& p)
 	: m_p(p),
-	  m_tableHash(std::hypot(p.table_length, p.table_width)),
+	  m_tableHash(p.maxDiagonal()),
 	  m_legHash(legCell(p)),
-	  m_contextTableHash(std::hypot(p.table_length, p.table_width)),
+	  m_contextTableHash(p.maxDiagonal()),
 	  m_contextLegHash(legCell(p))
 {
 }

@@ -26,10 +26,13 @@ double logCell(double logDensity, const ModelParams& p)
 
 double logTablePrior(const ModelParams& p) { return core::cachedLog(p.c_T); }  // eq. 4
 
+// eq. 4 with the class: c_T P(class); exactly c_T without a catalogue (log 1 = 0)
+double logTablePrior(const Table& t, const ModelParams& p) { return core::cachedLog(p.c_T) + std::log(p.priorOf(t.cls)); }
+
 void tableCorner(const Table& t, int i, const ModelParams& p, double& x, double& y)
 {
-	const double lx = (i == 0 || i == 3 ? 0.5 : -0.5) * p.table_length;
-	const double ly = (i < 2 ? 0.5 : -0.5) * p.table_width;
+	const double lx = (i == 0 || i == 3 ? 0.5 : -0.5) * p.lengthOf(t.cls);
+	const double ly = (i < 2 ? 0.5 : -0.5) * p.widthOf(t.cls);
 	const auto [s, c] = core::cachedSinCos(t.theta);
 	x = t.x + c * lx - s * ly;
 	y = t.y + s * lx + c * ly;
@@ -40,8 +43,8 @@ void tableCorners(const Table& t, const ModelParams& p, double x[4], double y[4]
 	const auto [s, c] = core::cachedSinCos(t.theta);
 	for (int i = 0; i < 4; i++)
 	{
-		const double lx = (i == 0 || i == 3 ? 0.5 : -0.5) * p.table_length;
-		const double ly = (i < 2 ? 0.5 : -0.5) * p.table_width;
+		const double lx = (i == 0 || i == 3 ? 0.5 : -0.5) * p.lengthOf(t.cls);
+		const double ly = (i < 2 ? 0.5 : -0.5) * p.widthOf(t.cls);
 		x[i] = t.x + c * lx - s * ly;
 		y[i] = t.y + s * lx + c * ly;
 	}
@@ -61,7 +64,7 @@ int nearestCorner(const double x[4], const double y[4], double px, double py, do
 
 OrientedRect tableRect(const Table& t, const ModelParams& p)
 {
-	return {t.x, t.y, t.theta, p.table_length / 2, p.table_width / 2};
+	return {t.x, t.y, t.theta, p.lengthOf(t.cls) / 2, p.widthOf(t.cls) / 2};
 }
 
 OrientedRect legRect(const Leg& l) { return {l.x, l.y, l.theta, l.wx / 2, l.wy / 2}; }

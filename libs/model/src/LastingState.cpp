@@ -21,7 +21,7 @@ void growTo(std::vector<T>& v, Id bound, const T& value = T())
 
 LastingState::LastingState(const ModelParams& sizes)
 	: m_sizes(sizes),
-	  m_tableGrid(std::hypot(sizes.table_length, sizes.table_width)),
+	  m_tableGrid(sizes.maxDiagonal()),
 	  m_legGrid(GRID_CELL),
 	  m_contactGrid(GRID_CELL)
 {
@@ -118,7 +118,7 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 	++m_epoch;
 	out.tables.clear(), out.legs.clear(), out.contacts.clear();
 	std::vector<Id> visitLegs, visitTables, contextTables, contextLegs;
-	const double halfDiagonal = std::hypot(m_sizes.table_length, m_sizes.table_width) / 2;
+	const double halfDiagonal = model.maxDiagonal() / 2;
 	for (const Id a : around)
 	{
 		const double x = m_contacts[a].shapelet.x, y = m_contacts[a].shapelet.y;
@@ -134,7 +134,7 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 			for (int c = 0; c < 4; c++)
 			{
 				double cx = 0, cy = 0;
-				tableCorner(m_tables[t], c, m_sizes, cx, cy);
+				tableCorner(m_tables[t], c, model, cx, cy);
 				if (dist2(cx, cy, x, y) <= radii.visit * radii.visit)
 				{
 					visitTables.push_back(t);
@@ -279,14 +279,16 @@ size_t LastingState::forgetUnexplained(Id c, size_t keep, double radius)
 void LastingState::restore(
 	const std::vector<Table>& tables, const std::vector<double>& existence, const std::vector<Table>& reported,
 	const std::vector<Leg>& legs, const std::vector<LegEvidence>& evidence, const std::vector<Contact>& contacts,
-	uint64_t seq)
+	uint64_t seq, const ModelParams& model)
 {
 	clear();
 	std::vector<Id> tableIds, legIds;
 	for (size_t i = 0; i < tables.size(); i++)
 	{
 		tableIds.push_back(addTable(tables[i], existence[i]));
-		if (!reported.empty()) m_reported[tableIds.back()] = reported.at(i);
+		if (reported.empty()) continue;
+		Table& r = m_reported[tableIds.back()];  // the reported pose; class and size are the table's
+		r.x = reported.at(i).x, r.y = reported.at(i).y, r.theta = reported.at(i).theta;
 	}
 	for (size_t i = 0; i < legs.size(); i++)
 	{
@@ -295,7 +297,7 @@ void LastingState::restore(
 		if (l.parent != NONE)
 		{
 			l.parent = tableIds.at(static_cast<size_t>(l.parent));
-			l.corner = logLegGivenTable(l, m_tables[l.parent], m_sizes).corner;  // argmin of eq. 6
+			l.corner = logLegGivenTable(l, m_tables[l.parent], model).corner;  // argmin of eq. 6
 		}
 		legIds.push_back(addLeg(l, evidence[i]));
 	}

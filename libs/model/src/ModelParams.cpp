@@ -1,4 +1,7 @@
 #include <whiskermap/model/ModelParams.h>
+#include <whiskermap/model/ObjectCatalogue.h>
+
+#include <filesystem>
 
 #include <cmath>
 #include <tuple>
@@ -29,10 +32,31 @@ ModelParams ModelParams::fromIni(core::IniSection& sec)
 	p.parent_gate = sec.number("parent_gate", 1e-6, 100);
 	p.free_space = sec.boolean("free_space", p.free_space);
 	p.free_space_p_miss = sec.number("free_space_p_miss", p.free_space_p_miss, 1e-12, 1);
+	const std::string objects = sec.text("objects", "");
 	sec.finish();
+	if (!objects.empty())
+	{
+		const std::filesystem::path rel(objects);
+		const auto dir = std::filesystem::path(sec.fileLabel()).parent_path();
+		p.classes = ObjectCatalogue::load(rel.is_absolute() ? objects : (dir / rel).string());
+	}
 	if (p.leg_width >= std::min(p.table_length, p.table_width))
 		sec.fail("leg_width", "must be smaller than table_length and table_width");
 	return p;
+}
+
+double ModelParams::maxDiagonal() const
+{
+	double d = 0;
+	for (int k = 0; k < classCount(); k++) d = std::max(d, std::hypot(lengthOf(k), widthOf(k)));
+	return d;
+}
+
+double ModelParams::maxLength() const
+{
+	double d = 0;
+	for (int k = 0; k < classCount(); k++) d = std::max(d, lengthOf(k));
+	return d;
 }
 
 bool ModelParams::operator==(const ModelParams& o) const
@@ -41,7 +65,7 @@ bool ModelParams::operator==(const ModelParams& o) const
 		return std::tie(
 			p.sigma_r, p.sigma_theta, p.sigma_w, p.sigma_tau, p.shaft_noise, p.sigma_across, p.c_T, p.c_L, p.c_S,
 			p.alpha_L, p.alpha_S, p.epsilon, p.delta, p.table_length, p.table_width, p.leg_width, p.texture,
-			p.parent_gate, p.free_space, p.free_space_p_miss);
+			p.parent_gate, p.free_space, p.free_space_p_miss, p.classes);
 	};
 	return tie(*this) == tie(o);
 }

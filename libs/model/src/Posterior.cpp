@@ -38,7 +38,7 @@ Overlaps overlappingTables(const Blackboard& bb, Id t)
 {
 	const ModelParams& p = bb.params();
 	const OrientedRect r = tableRect(bb.table(t), p);
-	const double reach = std::hypot(p.table_length, p.table_width);
+	const double reach = p.maxDiagonal();
 	Overlaps n;
 	bb.forEachTableNear(r.cx, r.cy, reach, [&](Id o) { n.board += o != t && r.overlaps(tableRect(bb.table(o), p)); });
 	bb.forEachContextTableNear(r.cx, r.cy, reach, [&](Id o) {
@@ -86,7 +86,7 @@ double logJoint(const Blackboard& bb)
 	for (Id t = 0; t < bb.tableIdBound(); t++)
 	{
 		if (!bb.hasTable(t)) continue;
-		sum += logCell(logTablePrior(p), p) + tableFactors(bb, t, bb.cornerCounts(t));
+		sum += logCell(logTablePrior(bb.table(t), p), p) + tableFactors(bb, t, bb.cornerCounts(t));
 		const Overlaps o = overlappingTables(bb, t);
 		boardPairs += o.board, contextPairs += o.context;
 	}
@@ -109,7 +109,7 @@ double logJointAround(const Blackboard& bb, Id table)
 	const ModelParams& p = bb.params();
 	const std::vector<Id>& legs = bb.legsOf(table);
 	const Overlaps to = overlappingTables(bb, table);
-	double sum = logCell(logTablePrior(p), p) + tableFactors(bb, table, bb.cornerCounts(table));
+	double sum = logCell(logTablePrior(bb.table(table), p), p) + tableFactors(bb, table, bb.cornerCounts(table));
 	int pairs = to.board + to.context;
 	for (const Id l : legs)
 	{
@@ -148,7 +148,7 @@ double logOddsTable(const Blackboard& bb, Id table)
 {
 	const ModelParams& p = bb.params();
 	const Overlaps o = overlappingTables(bb, table);
-	double sum = logCell(logTablePrior(p), p) + tableFactors(bb, table, bb.cornerCounts(table)) +
+	double sum = logCell(logTablePrior(bb.table(table), p), p) + tableFactors(bb, table, bb.cornerCounts(table)) +
 				 logOverlap(o.board + o.context, p);
 	for (const Id l : bb.legsOf(table)) sum += logLegDensity(bb, bb.leg(l), table) - logLegNull(p);
 	return sum;

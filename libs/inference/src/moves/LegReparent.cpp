@@ -15,7 +15,7 @@ std::optional<Proposal> LegReparent::propose(MoveContext& ctx, Id l)
 	const model::Leg& leg = bb.leg(l);
 	m_candidates.clear();
 	if (leg.parent != NONE) m_candidates.push_back(NONE);
-	const double reach = std::hypot(ctx.mp.table_length, ctx.mp.table_width) / 2 + ctx.mp.parent_gate;
+	const double reach = ctx.mp.maxDiagonal() / 2 + ctx.mp.parent_gate;
 	bb.forEachTableNear(leg.x, leg.y, reach, [&](Id t) {
 		if (t != leg.parent && withinGate(ctx, l, t)) m_candidates.push_back(t);
 	});

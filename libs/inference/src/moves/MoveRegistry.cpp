@@ -6,6 +6,7 @@
 #include <whiskermap/inference/moves/ShapeletLink.h>
 #include <whiskermap/inference/moves/SplitMerge.h>
 #include <whiskermap/inference/moves/TableBirthDeath.h>
+#include <whiskermap/inference/moves/TableClassSwitch.h>
 #include <whiskermap/inference/moves/TableRefit.h>
 #include <whiskermap/model/Densities.h>
 
@@ -100,6 +101,7 @@ MoveRegistry::MoveRegistry(const model::ModelParams& p)
 	const auto legRefit = std::make_shared<LegRefit>();
 	const auto tableRefit = std::make_shared<TableRefit>();
 	const auto reparent = std::make_shared<LegReparent>();
+	const auto classSwitch = std::make_shared<TableClassSwitch>();
 	// Name, target, slot, offers per polish sweep, visit; a sweep offers them in this order.
 	m_entries = {
 		{"priming", Target::Shapelet, Slot::Always, 1, Priming{}},
@@ -109,6 +111,8 @@ MoveRegistry::MoveRegistry(const model::ModelParams& p)
 		 [=](MoveContext& c, Id t) { tryMove(c, *legs, [&] { return legs->birthAtCorner(c, t); }); }},
 		{"table refit", Target::Table, Slot::Refit, 1,
 		 [=](MoveContext& c, Id t) { tryMove(c, *tableRefit, [&] { return tableRefit->propose(c, t); }); }},
+		{"table class", Target::Table, Slot::Refit, 1,
+		 [=](MoveContext& c, Id t) { tryMove(c, *classSwitch, [&] { return classSwitch->propose(c, t); }); }},
 		{"leg death", Target::Leg, Slot::Death, 1,
 		 [=](MoveContext& c, Id l) { tryMove(c, *legs, [&] { return legs->death(c, l); }); }},
 		{"leg reparent", Target::Leg, Slot::NewParent, 1,

@@ -29,12 +29,15 @@ Proposal TableBirthDeath::death(MoveContext& ctx, Id t)
 // (legs within the parent gate of one of its still empty corners) and phi_f,i the free-space
 // factor (eq. 21, 1 when off) of the legs it implies at its four corners: 8 tables with the
 // leg at one of 4 corners in one of the 2 yaws (mod pi) consistent with the leg's yaw (mod
-// pi/2), and the pair tables.
+// pi/2), for each class of the catalogue, and the pair tables (each class whose corner
+// distances fit the pair).
 Table TableBirthDeath::drawCandidate(MoveContext& ctx, Id l, double& logProbability)
 {
 	constexpr double ADOPT_WEIGHT = 4;
 	m_tables.clear();
-	for (int i = 0; i < 8; i++) m_tables.push_back(tableWithLegAt(ctx.mp, ctx.bb.leg(l), i / 2, i % 2 ? M_PI_2 : 0.0));
+	for (int k = 0; k < ctx.mp.classCount(); k++)
+		for (int i = 0; i < 8; i++)
+			m_tables.push_back(tableWithLegAt(ctx.mp, ctx.bb.leg(l), i / 2, i % 2 ? M_PI_2 : 0.0, k));
 	tablesForPairs(ctx.bb, l, m_tables);
 	m_weights.clear();
 	double total = 0;
@@ -80,12 +83,19 @@ Proposal TableBirthDeath::birth(MoveContext& ctx, Id l)
 			std::find(m_abandoned.begin(), m_abandoned.end(), parent) == m_abandoned.end())
 			m_abandoned.push_back(parent);
 	}
-	m_restore = !m_abandoned.empty();
+	// An adopted leg of another width than the table's (an object catalogue's class: a chair's
+	// 3 cm legs) is refitted at the table's leg width in the same move; never without a
+	// catalogue (every width is then leg_width).
+	m_resized.clear();
+	for (const Id a : m_candidates)
+		if (bb.leg(a).wx != chosen.leg_width || bb.leg(a).wy != chosen.leg_width) m_resized.push_back(a);
+	m_restore = !m_abandoned.empty() || !m_resized.empty();
 	if (m_restore) m_backup = bb;
 
-	// Exact change of logJoint, one local step at a time: unlink the adopted legs, add the
-	// table with them all as children (eq. 20 of the new table), remove abandoned tables.
-	bool reversible = m_abandoned.empty();
+	// Exact change of logJoint, one local step at a time: unlink the adopted legs, resize
+	// them (eq. 20 of each before and after), add the table with them all as children (eq. 20
+	// of the new table), remove abandoned tables.
+	bool reversible = m_abandoned.empty() && m_resized.empty();
 	m_oldParents.clear();
 	for (const Id a : m_candidates)
 	{
@@ -93,6 +103,14 @@ Proposal TableBirthDeath::birth(MoveContext& ctx, Id l)
 		reversible = reversible && bb.leg(a).parent == NONE && bb.explains(a);
 		p.logTarget -= model::logLegLinkGain(bb, a, bb.leg(a).parent);
 		bb.setLegParent(a, NONE);
+	}
+	for (const Id a : m_resized)
+	{
+		model::Leg fit;
+		if (!ctx.fittedLeg(a, &chosen, fit)) continue;
+		p.logTarget -= model::logOddsLeg(bb, a);
+		bb.setLeg(a, fit);
+		p.logTarget += model::logOddsLeg(bb, a);
 	}
 	m_table = bb.addTable(chosen);
 	for (const Id a : m_candidates) bb.setLegParent(a, m_table);

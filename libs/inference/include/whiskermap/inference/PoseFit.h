@@ -23,12 +23,12 @@ struct CentreEquations
 /** Adds eq. 7's quadratic part in a leg's centre for a leg at yaw `theta` (side leg_width):
  *  each contact on the line of the face whose outward normal matches its own, weighted by
  *  sigma_r^2 / its variance across that face (1 without shaft noise), and the folded
- *  `evidence` (may be null). */
+ *  `evidence` (may be null); `w` the leg's side. */
 void addCentreEquations(
 	const model::ModelParams& p, const obs::Shapelet* const* contacts, size_t n, double theta,
-	const model::LegEvidence* evidence, CentreEquations& eq);
+	const model::LegEvidence* evidence, CentreEquations& eq, double w);
 
-/** The square leg (side leg_width) best explaining `n` contacts, each on the face whose
+/** The square leg (side: table t's leg width, else leg_width) best explaining `n` contacts, each on the face whose
  *  outward normal matches its own, optionally under table `t`: yaw = mean of the normals'
  *  (and the table's) yaws modulo 90 deg; centre = least squares of "each contact on its
  *  face line" plus "near (qx, qy)" with weight `pull` (1: a table corner, same sigma_r;

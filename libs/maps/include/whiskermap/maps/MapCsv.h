@@ -12,8 +12,9 @@ namespace whiskermap::maps
 struct MapCsv
 {
 	/** `id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs`, one row per
-	 *  object (id = its row index). */
-	static void writeObjects(const std::string& path, const std::vector<TMappedObject>& objects);
+	 *  object (id = its row index); with `withClass` (a map with an object catalogue) also
+	 *  `,class` (the column whisker-eval matches classes by). */
+	static void writeObjects(const std::string& path, const std::vector<TMappedObject>& objects, bool withClass = false);
 	/** `pose,x,y,yaw_deg,length,width,leg_width,texture,log_posterior`, one row per MAP table
 	 *  per pose (pose = 0-based index of the sweep; poses without tables have no row). */
 	static void writePerPose(const std::string& path, const std::vector<TPoseRecord>& poses);

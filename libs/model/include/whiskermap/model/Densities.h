@@ -21,8 +21,10 @@ double logCell(double logDensity, const ModelParams& p);
 
 /** Flat table prior p(T) = c_T (eq. 4). */
 double logTablePrior(const ModelParams& p);
+/** The same with the table's class: c_T P(class) (eq. 4 with the catalogue's class prior). */
+double logTablePrior(const Table& t, const ModelParams& p);
 
-/** Centre of corner i in 0..3 of a table: (+,+), (-,+), (-,-), (+,-) in the table frame. */
+/** Centre of corner i in 0..3 of a table (its class's length and width): (+,+), (-,+), (-,-), (+,-) in the table frame. */
 void tableCorner(const Table& t, int i, const ModelParams& p, double& x, double& y);
 /** All four corners at once (one sine and cosine). */
 void tableCorners(const Table& t, const ModelParams& p, double x[4], double y[4]);

@@ -101,11 +101,11 @@ class LastingState
 
 	/** Rebuilds a state from its parts (deserialization): tables with their existence and
 	 *  reported poses (empty: the tables), legs (parent = index into `tables`) with evidence,
-	 *  contacts (leg = index into `legs`). */
+	 *  contacts (leg = index into `legs`); `model` gives the tables' sizes (their classes). */
 	void restore(
 		const std::vector<Table>& tables, const std::vector<double>& existence, const std::vector<Table>& reported,
 		const std::vector<Leg>& legs, const std::vector<LegEvidence>& evidence, const std::vector<Contact>& contacts,
-		uint64_t seq);
+		uint64_t seq, const ModelParams& model);
 	void clear();
 
    private:

@@ -1,5 +1,9 @@
 #pragma once
 #include <whiskermap/core/IniSection.h>
+#include <whiskermap/model/ObjectClass.h>
+
+#include <string>
+#include <vector>
 
 namespace whiskermap::model
 {
@@ -34,6 +38,22 @@ struct ModelParams
 	double leg_width = 0.05;  ///< side of a square leg, metres
 	double texture = 0.7;  ///< texture of table legs (the paper arena's)
 
+	/** The object catalogue (optional key `objects`: a file resolved relative to the config;
+	 *  doc/formats.md): the classes a table hypothesis can have (Table::cls indexes them).
+	 *  Empty: one class, the known table above (table_length, table_width, leg_width, texture). */
+	std::vector<ObjectClass> classes;
+
+	int classCount() const { return classes.empty() ? 1 : static_cast<int>(classes.size()); }
+	double lengthOf(int k) const { return classes.empty() ? table_length : classes[k].length; }
+	double widthOf(int k) const { return classes.empty() ? table_width : classes[k].width; }
+	double legWidthOf(int k) const { return classes.empty() ? leg_width : classes[k].leg_width; }
+	double textureOf(int k) const { return classes.empty() ? texture : classes[k].texture; }
+	double priorOf(int k) const { return classes.empty() ? 1.0 : classes[k].prior; }
+	std::string nameOf(int k) const { return classes.empty() ? "table" : classes[k].label; }
+	/** Largest footprint diagonal and length over the classes (search radii, hash cells). */
+	double maxDiagonal() const;
+	double maxLength() const;
+
 	/** Radius gate for candidate parents: a parent is considered only when the child lies
 	 *  within this distance of it (a leg's corner, a shapelet the leg's perimeter), metres. */
 	double parent_gate = 0.05;
@@ -42,7 +62,8 @@ struct ModelParams
 	bool free_space = false;  ///< off: the paper's model
 	double free_space_p_miss = 0.05;  ///< chance a whisker sweeping through a leg misses it
 
-	/** Reads every key of `sec` (all required but the optional free-space keys) and calls
+	/** Reads every key of `sec` (all required but the optional shaft-noise, free-space and
+	 *  objects keys; `objects` is read with ObjectCatalogue::load) and calls
 	 *  sec.finish(); throws core::Error. */
 	static ModelParams fromIni(core::IniSection& sec);
 

@@ -34,6 +34,7 @@ class TableBirthDeath
 	model::Table drawCandidate(MoveContext& ctx, model::Id l, double& logProbability);
 
 	model::Blackboard m_backup;  ///< the board before a move that removes tables, to undo it
+	std::vector<model::Id> m_resized;  ///< adopted legs refitted at the table's leg width
 	bool m_restore = false;  ///< a rejected move restores m_backup (else undoes the birth)
 	model::Id m_table = model::NONE;  ///< the table born (NONE after a death)
 	std::vector<model::Id> m_candidates, m_oldParents, m_abandoned, m_orphans;
