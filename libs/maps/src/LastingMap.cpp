@@ -15,6 +15,18 @@ bool sameLeg(const model::Blackboard& a, const model::Blackboard& b, model::Id l
 		   a.evidence(l).count() == b.evidence(l).count() && a.shapeletsOf(l) == b.shapeletsOf(l);
 }
 
+/** Table t's rigid fit (its reported pose) depends only on which contacts its legs explain at
+ *  which corners: true when the anneal left those as they were. */
+bool sameFitData(const model::Blackboard& a, const model::Blackboard& b, model::Id t)
+{
+	if (!b.hasTable(t) || a.legsOf(t) != b.legsOf(t) || a.table(t).cls != b.table(t).cls) return false;
+	for (const model::Id l : b.legsOf(t))
+		if (a.leg(l).corner != b.leg(l).corner || a.leg(l).wx != b.leg(l).wx || a.leg(l).wy != b.leg(l).wy ||
+			a.shapeletsOf(l) != b.shapeletsOf(l) || a.evidence(l).count() != b.evidence(l).count())
+			return false;
+	return true;
+}
+
 /** The sampler's settings with the lasting map's local schedule (to the sampler's beta_end). */
 inference::SamplerParams localSampler(inference::SamplerParams p, const LastingMap::TOptions::TSchedule& s)
 {
@@ -60,6 +72,17 @@ std::vector<double> LastingMap::existence(
 
 void LastingMap::refitReported(const model::ModelParams& model)
 {
+	// Region tables whose fit data did not change keep their pose (refitting gives the same).
+	std::vector<model::Id> kept;
+	for (const auto& [b, pose] : m_carry)
+	{
+		const model::Id t = m_newTables[static_cast<size_t>(b)];
+		model::Table r = m_state.reported(t);
+		r.x = pose.x, r.y = pose.y, r.theta = pose.theta;
+		m_state.setReported(t, r);
+		kept.push_back(t);
+	}
+	std::sort(kept.begin(), kept.end());
 	m_refit.insert(m_refit.end(), m_newTables.begin(), m_newTables.end());
 	for (const model::Id l : m_newLegs)
 		if (l != model::NONE) m_refit.push_back(m_state.leg(l).parent);
@@ -68,7 +91,8 @@ void LastingMap::refitReported(const model::ModelParams& model)
 	model::ModelParams shaft = model;
 	shaft.shaft_noise = true;  // the reading errs along its shaft (contacts without one: isotropic)
 	for (const model::Id t : m_refit)
-		if (t != model::NONE && m_state.hasTable(t)) m_state.setReported(t, inference::fitRigidTable(m_state, t, shaft));
+		if (t != model::NONE && m_state.hasTable(t) && !std::binary_search(kept.begin(), kept.end(), t))
+			m_state.setReported(t, inference::fitRigidTable(m_state, t, shaft));
 }
 
 LastingMap::TStats LastingMap::insert(
@@ -101,6 +125,9 @@ LastingMap::TStats LastingMap::insert(
 	m_refit.clear();  // tables the region's legs stood under (a context table may lose or gain one)
 	for (const model::Id l : m_region->legs)
 		if (l != model::NONE && m_state.hasLeg(l)) m_refit.push_back(m_state.leg(l).parent);
+	m_carry.clear();  // region tables whose reported pose stands (board id, pose)
+	for (model::Id b = 0; b < static_cast<model::Id>(m_region->tables.size()); b++)
+		if (sameFitData(board, solved, b)) m_carry.emplace_back(b, m_state.reported(m_region->tables[static_cast<size_t>(b)]));
 	m_state.replace(*m_region, solved, existence(board, solved, model), m_newTables, m_newLegs);
 	for (const model::Id l : m_newLegs)
 		if (l != model::NONE) m_state.fold(l, m_options.contacts_per_leg, model);

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace whiskermap::maps
@@ -86,7 +87,8 @@ class LastingMap
 	std::vector<double> existence(
 		const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model);
 	/** Refits the reported pose of every table whose legs the last replace() may have changed:
-	 *  the region's, and those its legs stood under before (m_refit) or stand under now. */
+	 *  the region's (but those in m_carry, whose legs explain the same contacts as before:
+	 *  they keep their pose), and those its legs stood under before (m_refit) or stand under now. */
 	void refitReported(const model::ModelParams& model);
 
 	model::LastingState m_state;
@@ -98,5 +100,6 @@ class LastingMap
 	std::unique_ptr<model::LastingState::Region> m_region;
 	inference::TableExistence m_existence;
 	std::vector<model::Id> m_new, m_newTables, m_newLegs, m_refit;
+	std::vector<std::pair<model::Id, model::Table>> m_carry;
 };
 }  // namespace whiskermap::maps
