@@ -52,17 +52,18 @@ void LegEvidence::add(const obs::Shapelet& s, const Leg& l, const ModelParams& p
 	int n = 0;
 	offset(l.theta, d, n);
 	int k = 0;
-	double best = std::numeric_limits<double>::infinity(), ws = 0;
+	double best = std::numeric_limits<double>::infinity();
 	for (int f = 0; f < 4; f++)
 	{
 		const double a = m_theta + d + f * M_PI_2, ux = std::cos(a), uy = std::sin(a);
 		const double r = ux * (s.x - l.x) + uy * (s.y - l.y) - halfExtent(l, f - n);
-		const double shaft = 1 / shaftVariance(s, ux, uy, p);
-		const double w = p.shaft_noise ? shaft : 1 / sq(p.sigma_r);
+		const double w = 1 / contactVariance(s, ux, uy, p);
 		const double norm = p.shaft_noise ? 0.5 * std::log(sq(p.sigma_r) * w) : 0;  // 1-D normaliser
 		const double cost = w * r * r - norm + wa * sq(core::angleDiff(s.normal, a, 2 * M_PI));
-		if (cost < best) best = cost, k = f, ws = shaft;
+		if (cost < best) best = cost, k = f;
 	}
+	const double normal = m_theta + d + k * M_PI_2;  // the chosen face's, for its shaft weight
+	const double ws = 1 / shaftVariance(s, std::cos(normal), std::sin(normal), p);
 	m_norm += 0.5 * std::log(sq(p.sigma_r) * ws);
 	const double ex = s.x - m_ax, ey = s.y - m_ay;
 	addPoint(m_face[k], 1 / sq(p.sigma_r), ex, ey);
