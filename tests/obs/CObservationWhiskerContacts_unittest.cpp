@@ -8,6 +8,8 @@
 #include <whiskermap/obs/CObservationWhiskerContacts.h>
 
 #include <cmath>
+
+#include "SampleSweep.h"
 #include <cstdlib>
 #include <cstring>
 
@@ -18,35 +20,7 @@ namespace
 {
 const std::string FIXTURE = std::string(WHISKERMAP_SOURCE_DIR) + "/tests/data/whisker_contacts_v0.bin";
 
-/** A fixed sweep: two whiskers, one touching, one not. */
-CObservationWhiskerContacts sample()
-{
-	CObservationWhiskerContacts o;
-	o.timestamp = mrpt::Clock::fromDouble(1300000000.5);
-	o.sensorLabel = "WHISKERS";
-	o.sensorPose = mrpt::poses::CPose3D(0.08, 0, 0, 0, 0, 0);
-	o.noise = {0.01, 0.0872664626, 0.05};
-	TWhisker a;
-	a.mount_x = 0;
-	a.mount_y = 0.03;
-	a.sweep_start = 2.9;
-	a.sweep_end = 0.2;
-	a.length = 0.6;
-	a.touched = true;
-	a.angle = M_PI / 2;
-	a.r = 0.25;
-	a.normal = -M_PI / 2;
-	a.texture = 0.7;
-	TWhisker b = a;
-	b.mount_y = -0.03;
-	b.sweep_start = -2.9;
-	b.sweep_end = -0.2;
-	b.touched = false;
-	b.angle = -0.2;
-	b.r = b.normal = b.texture = 0;
-	o.whiskers = {a, b};
-	return o;
-}
+CObservationWhiskerContacts sample() { return whiskermap::test::sampleSweep(0, 0.03); }
 
 void expectSame(const CObservationWhiskerContacts& x, const CObservationWhiskerContacts& y)
 {

@@ -8,42 +8,15 @@
 
 #include <cmath>
 
+#include "SampleSweep.h"
+
 using whiskermap::obs::CObservationWhiskerContacts;
 using whiskermap::obs::TWhisker;
 using whiskermap::obs::WhiskerRanges;
 
 namespace
 {
-/** A hand-made sweep: whisker 0 touched 0.25 m along its shaft, pointing left; whisker 1
- *  touched nothing and ended its whisk pointing 0.2 rad right of forward. */
-CObservationWhiskerContacts sweep()
-{
-	CObservationWhiskerContacts o;
-	o.timestamp = mrpt::Clock::fromDouble(1300000000.5);
-	o.sensorLabel = "WHISKERS";
-	o.sensorPose = mrpt::poses::CPose3D(0.08, 0, 0, 0, 0, 0);
-	o.noise = {0.01, 0.0872664626, 0.05};
-	TWhisker a;
-	a.mount_x = -0.03;
-	a.mount_y = 0.04;
-	a.sweep_start = 2.9;
-	a.sweep_end = 0.2;
-	a.length = 0.6;
-	a.touched = true;
-	a.angle = M_PI / 2;
-	a.r = 0.25;
-	a.normal = -M_PI / 2;
-	a.texture = 0.7;
-	TWhisker b = a;
-	b.mount_y = -0.04;
-	b.sweep_start = -2.9;
-	b.sweep_end = -0.2;
-	b.touched = false;
-	b.angle = -0.2;
-	b.r = b.normal = b.texture = 0;
-	o.whiskers = {a, b};
-	return o;
-}
+CObservationWhiskerContacts sweep() { return whiskermap::test::sampleSweep(-0.03, 0.04); }
 
 /** The occupancy probability of the grid cell at world point (x, y), 0.5 unknown. (MRPT's
  *  getPos() is the probability that the cell is FREE.) */
