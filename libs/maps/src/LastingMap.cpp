@@ -123,11 +123,15 @@ LastingMap::TStats LastingMap::insert(
 	const model::Blackboard& solved = m_sampler->best();
 
 	m_refit.clear();  // tables the region's legs stood under (a context table may lose or gain one)
-	for (const model::Id l : m_region->legs)
-		if (l != model::NONE && m_state.hasLeg(l)) m_refit.push_back(m_state.leg(l).parent);
 	m_carry.clear();  // region tables whose reported pose stands (board id, pose)
-	for (model::Id b = 0; b < static_cast<model::Id>(m_region->tables.size()); b++)
-		if (sameFitData(board, solved, b)) m_carry.emplace_back(b, m_state.reported(m_region->tables[static_cast<size_t>(b)]));
+	if (m_options.rigid_pose)
+	{
+		for (const model::Id l : m_region->legs)
+			if (l != model::NONE && m_state.hasLeg(l)) m_refit.push_back(m_state.leg(l).parent);
+		for (model::Id b = 0; b < static_cast<model::Id>(m_region->tables.size()); b++)
+			if (sameFitData(board, solved, b))
+				m_carry.emplace_back(b, m_state.reported(m_region->tables[static_cast<size_t>(b)]));
+	}
 	m_state.replace(*m_region, solved, existence(board, solved, model), m_newTables, m_newLegs);
 	for (const model::Id l : m_newLegs)
 		if (l != model::NONE) m_state.fold(l, m_options.contacts_per_leg, model);
