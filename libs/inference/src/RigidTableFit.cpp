@@ -1,6 +1,8 @@
 #include <whiskermap/inference/RigidTableFit.h>
 #include <whiskermap/model/Densities.h>
 
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
 #include <cmath>
 
 namespace whiskermap::inference
@@ -44,19 +46,51 @@ model::Table fitRigidTable(const model::LastingState& s, model::Id t, const mode
 		c.theta += d;
 		return c;
 	};
+	// The pose as a point u = (x, y, reach * yaw turn about the pivot), all in metres.
+	auto at = [&](const model::Table& base, const Eigen::Vector3d& u) {
+		model::Table c = turned(base, u[2] / reach);
+		c.x += u[0], c.y += u[1];
+		return c;
+	};
 	double value = score(best);
+	// Newton steps on the quadratic through 10 scores around the pose (the score is a sum of
+	// quadratics, eq. 7, while no contact changes face): gradient and Hessian by differences.
+	constexpr double h = 1e-4;
+	for (int it = 0; it < 4; it++)
+	{
+		Eigen::Vector3d g, fp, fm;
+		Eigen::Matrix3d H;
+		for (int i = 0; i < 3; i++)
+		{
+			const Eigen::Vector3d e = h * Eigen::Vector3d::Unit(i);
+			fp[i] = score(at(best, e)), fm[i] = score(at(best, -e));
+			g[i] = (fp[i] - fm[i]) / (2 * h), H(i, i) = (fp[i] - 2 * value + fm[i]) / (h * h);
+		}
+		for (int i = 0; i < 3; i++)
+			for (int j = i + 1; j < 3; j++)
+				H(i, j) = H(j, i) = (score(at(best, h * Eigen::Vector3d::Unit(i) + h * Eigen::Vector3d::Unit(j))) - fp[i] -
+									 fp[j] + value) / (h * h);
+		const Eigen::LDLT<Eigen::Matrix3d> ldlt(-H);
+		if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) break;  // not a maximum nearby: search only
+		Eigen::Vector3d u = ldlt.solve(g);
+		if (!u.allFinite()) break;
+		if (u.norm() > p.leg_width) u *= p.leg_width / u.norm();  // trust region: a leg width
+		const model::Table c = at(best, u);
+		const double v = score(c);
+		if (!(v > value)) break;
+		value = v, best = c;
+		if (u.norm() < 1e-5) return best;  // converged: the step is below the search's resolution
+	}
+	// Where the quadratic does not hold: a compass search, down to 0.01 mm at the corners.
 	for (double step = p.leg_width / 8; step > 1e-5; step /= 2)
 		for (bool improved = true; improved;)
 		{
 			improved = false;
 			for (int k = 0; k < 6; k++)
 			{
-				const double sign = k % 2 ? -1 : 1;
-				model::Table c = best;
-				if (k < 4)
-					(k < 2 ? c.x : c.y) += sign * step;
-				else
-					c = turned(c, sign * step / reach);
+				Eigen::Vector3d u = Eigen::Vector3d::Zero();
+				u[k / 2] = k % 2 ? -step : step;
+				const model::Table c = at(best, u);
 				const double v = score(c);
 				if (v > value + 1e-12) value = v, best = c, improved = true;
 			}
