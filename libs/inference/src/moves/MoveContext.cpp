@@ -65,8 +65,10 @@ bool MoveContext::adjacentFaceOffset(size_t s, double& offset) const
 	const obs::Shapelet& a = bb.shapelets()[s];
 	for (const obs::Shapelet& b : bb.shapelets())
 	{
+		const double dx = b.x - a.x, dy = b.y - a.y;
+		if (dx * dx + dy * dy > 2.25 * w * w) continue;  // farther than 1.5 w (most are): no angle needed
 		const double turn = core::angleDiff(b.normal, a.normal, 2 * M_PI);
-		if (std::hypot(b.x - a.x, b.y - a.y) > 1.5 * w || std::abs(std::abs(turn) - M_PI_2) > gate) continue;
+		if (std::abs(std::abs(turn) - M_PI_2) > gate) continue;
 		const double side = turn > 0 ? 1 : -1;  // b's normal = a's tangent * side
 		const double tx = -std::sin(a.normal), ty = std::cos(a.normal);
 		offset = std::clamp(side * ((b.x - a.x) * tx * side + (b.y - a.y) * ty * side - w / 2), -w / 2, w / 2);
