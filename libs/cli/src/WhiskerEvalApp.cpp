@@ -32,8 +32,9 @@ int print(const Options& o, const eval::EvalReport& r)
 	return 0;
 }
 
+/** A report holding what `fill` puts in it, printed. */
 template <class Fill>
-int report(const Options& o, Fill fill)
+int printWith(const Options& o, Fill fill)
 {
 	eval::EvalReport r;
 	r.options = o.eval;
@@ -48,7 +49,7 @@ int run(const Options& o)
 	{
 		if (!o.map.empty() || !o.path.empty() || !o.world.empty() || !o.candidates.empty())
 			throw core::Error("--calibration-runs pools the maps it lists: give no --map, --candidates, --world or --path");
-		return report(o, [&](eval::EvalReport& r) { r.calibration = EvalCalibration::ofRuns(o.calibrationRuns, o.eval); });
+		return printWith(o, [&](eval::EvalReport& r) { r.calibration = EvalCalibration::ofRuns(o.calibrationRuns, o.eval); });
 	}
 	if (!o.candidates.empty() && !o.calibration) throw core::Error("--candidates is pooled with --map for --calibration: give --calibration");
 	if (!o.plot.empty() && !o.calibration) throw core::Error("--reliability-plot draws --calibration or --calibration-runs: give one");
