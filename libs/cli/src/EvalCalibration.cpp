@@ -45,8 +45,8 @@ eval::Calibration EvalCalibration::ofRuns(const std::string& list, const eval::E
 		if (!(in >> map) || ((in >> candidates) && (in >> extra)))
 			throw core::Error(list + ": line " + std::to_string(n) + ": expected 'WORLD MAP [CANDIDATES]'");
 		// relative paths are relative to the list's folder
-		const auto at = [&](const std::string& f) {
-			return f.empty() || std::filesystem::path(f).is_absolute() ? f : (std::filesystem::path(list).parent_path() / f).string();
+		const auto at = [&](const std::string& file) {
+			return file.empty() || std::filesystem::path(file).is_absolute() ? file : (std::filesystem::path(list).parent_path() / file).string();
 		};
 		pooled.add(ofMap(at(world), at(map), at(candidates), opts));
 		runs++;
