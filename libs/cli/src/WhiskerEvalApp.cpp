@@ -1,4 +1,5 @@
 #include <CLI/CLI.hpp>
+#include <whiskermap/cli/EvalCalibration.h>
 #include <whiskermap/cli/WhiskerEvalApp.h>
 #include <whiskermap/cli/runApp.h>
 #include <whiskermap/core/Error.h>
@@ -17,14 +18,42 @@ namespace
 struct Options
 {
 	std::string world, map, walls, perPose, rawlog, path, truth;
+	std::string candidates, calibrationRuns, plot;  // calibration
 	size_t poses = 0;
-	bool json = false;
+	bool json = false, calibration = false;
 	eval::EvalOptions eval;
 };
+
+/** Prints the report; draws the reliability plot first when asked (it may fail: no output). */
+int print(const Options& o, const eval::EvalReport& r)
+{
+	if (!o.plot.empty()) EvalCalibration::plot(*r.calibration, o.calibrationRuns.empty() ? o.map : o.calibrationRuns, o.plot);
+	std::cout << (o.json ? r.toJson() : r.toText());
+	return 0;
+}
+
+/** A report holding what `fill` puts in it, printed. */
+template <class Fill>
+int printWith(const Options& o, Fill fill)
+{
+	eval::EvalReport r;
+	r.options = o.eval;
+	fill(r);
+	return print(o, r);
+}
 
 int run(const Options& o)
 {
 	o.eval.validate();
+	if (!o.calibrationRuns.empty())
+	{
+		if (!o.map.empty() || !o.path.empty() || !o.world.empty() || !o.candidates.empty())
+			throw core::Error("--calibration-runs pools the maps it lists: give no --map, --candidates, --world or --path");
+		return printWith(o, [&](eval::EvalReport& r) { r.calibration = EvalCalibration::ofRuns(o.calibrationRuns, o.eval); });
+	}
+	if (!o.candidates.empty() && !o.calibration) throw core::Error("--candidates is pooled with --map for --calibration: give --calibration");
+	if (!o.plot.empty() && !o.calibration) throw core::Error("--reliability-plot draws --calibration or --calibration-runs: give one");
+	if (o.calibration && o.map.empty()) throw core::Error("--calibration scores a map's existences: give --map and --world");
 	if (o.map.empty() && o.path.empty()) throw core::Error("nothing to evaluate: give --map (with --world) or --path (with --truth)");
 	if (o.path.empty() != o.truth.empty()) throw core::Error("--path and --truth go together");
 	if (o.map.empty() && !(o.world.empty() && o.perPose.empty() && o.rawlog.empty() && o.poses == 0))
@@ -85,8 +114,8 @@ int run(const Options& o)
 	else if (perPose)
 		while (perPose->next(tables)) acc->add(tables, mrpt::poses::CPose2D());
 	if (acc) report.perPose = acc->result();
-	std::cout << (o.json ? report.toJson() : report.toText());
-	return 0;
+	if (o.calibration) report.calibration = EvalCalibration::ofMap(o.world, o.map, o.candidates, o.eval);
+	return print(o, report);
 }
 }  // namespace
 
@@ -138,6 +167,21 @@ int WhiskerEvalApp::main(int argc, char** argv)
 		   "RPE: segments from each pose to the first pose at least this far along the true path, m")
 		->check(CLI::PositiveNumber)
 		->capture_default_str();
+	app.add_flag(
+		"--calibration", o.calibration,
+		"Existence calibration of --map (and --candidates): its objects binned by reported existence "
+		"(10 bins), per bin the count, mean existence and fraction real (matched to a true object), "
+		"and the expected calibration error ECE");
+	app.add_option(
+		"--candidates", o.candidates,
+		"map_candidates.csv (same columns as --map), pooled with --map for --calibration only");
+	app.add_option(
+		"--calibration-runs", o.calibrationRuns,
+		"Calibration pooled over many maps: a text file with one 'WORLD MAP [CANDIDATES]' line per run; "
+		"prints only the calibration (no --map, --world, --path)");
+	app.add_option(
+		"--reliability-plot", o.plot,
+		"With --calibration or --calibration-runs: write the reliability diagram to this PNG");
 	app.add_flag("--json", o.json, "Print one JSON object (fixed key order and format) instead of a table");
 	app.add_option(
 		   "--gate-distance", o.eval.gate_distance,

@@ -150,6 +150,7 @@ std::string EvalReport::toJson() const
 	}
 	if (walls) top.emplace_back("walls", object(wallFields(*walls), 2));
 	if (trajectory) top.emplace_back("trajectory", object(trajectoryFields(*trajectory, options), 2));
+	if (calibration) top.emplace_back("calibration", calibration->toJson(2));
 	return object(top, 0) + "\n";
 }
 
@@ -165,6 +166,7 @@ std::string EvalReport::toText() const
 		s += buf;
 	}
 	if (trajectory) s += trajectoryText(*trajectory, options);
+	if (calibration) s += calibration->toText();
 	return s;
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <whiskermap/eval/Calibration.h>
 #include <whiskermap/eval/EvalOptions.h>
 #include <whiskermap/eval/Identifiability.h>
 #include <whiskermap/eval/MapEvaluation.h>
@@ -21,6 +22,7 @@ struct EvalReport
 	std::optional<PerPoseEvaluation> perPose;  ///< when per-pose tables were given
 	std::optional<TrajectoryEvaluation> trajectory;  ///< when an estimated path was given
 	std::optional<WallEvaluation> walls;  ///< when estimated walls were given
+	std::optional<Calibration> calibration;  ///< existence calibration (--calibration)
 
 	/** `{ "precision": ..., ..., "per_pose": { ... }, "trajectory": { ... } }`, ending in a
 	 *  newline; the map's figures only with a map. Numbers have six decimals (counts none); an
