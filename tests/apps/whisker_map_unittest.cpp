@@ -5,6 +5,7 @@
 #include <mrpt/opengl/CSetOfObjects.h>
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <whiskermap/cli/WhiskerMapApp.h>
+#include <whiskermap/eval/TableCsv.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/maps/MapConfig.h>
 #include <whiskermap/maps/MapCsv.h>
@@ -170,4 +171,25 @@ TEST(WhiskerMap, RegressionFloorsOnTheShippedDatasets)
 		}
 		fs::remove_all(out);
 	}
+}
+
+// map_walls.csv as whisker-map writes it reads back with whisker-eval's reader (--walls).
+TEST(WhiskerMap, WallsCsvReadsBackInWhiskerEval)
+{
+	const fs::path dir = fs::temp_directory_path() / "whiskermap_walls_csv";
+	fs::create_directories(dir);
+	std::vector<whiskermap::model::LastingState::StoredWall> walls(2);
+	walls[0].wall = {0.5, 1.0, 3.0, 1.0, 0.1, 0.3};
+	walls[0].existence = 0.97;
+	walls[1].wall = {1.0, 2.0, 1.0, 4.5, 0.1, 0.3};
+	walls[1].existence = 1;
+	const std::string path = (dir / "map_walls.csv").string();
+	whiskermap::maps::MapCsv::writeWalls(path, walls);
+	const auto rows = whiskermap::eval::TableCsv::readWalls(path);
+	ASSERT_EQ(rows.size(), 2u);
+	EXPECT_NEAR(rows[0].wall.x1, 3.0, 1e-6);
+	EXPECT_NEAR(rows[0].wall.thickness, 0.1, 1e-6);
+	EXPECT_NEAR(rows[0].existence, 0.97, 1e-6);
+	EXPECT_NEAR(rows[1].wall.length(), 2.5, 1e-6);
+	fs::remove_all(dir);
 }
