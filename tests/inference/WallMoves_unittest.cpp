@@ -4,6 +4,7 @@
 #include <whiskermap/inference/WallProposals.h>
 #include <whiskermap/inference/moves/WallBirthDeath.h>
 #include <whiskermap/inference/moves/WallLink.h>
+#include <whiskermap/inference/moves/WallMerge.h>
 #include <whiskermap/inference/moves/WallRefit.h>
 
 #include "MoveBoards.h"
@@ -173,4 +174,59 @@ TEST(WallMoves, LegStandingInAWallPaysTheOverlapFactor)
 	outside.y = 0.3;
 	const Id a = bb.addLeg(inside), b = bb.addLeg(outside);
 	EXPECT_NEAR(model::logOddsLeg(bb, a) - model::logOddsLeg(bb, b), std::log(w.b.P.epsilon), 1e-9);  // eq. 16
+}
+
+TEST(WallMoves, MergeJoinsTwoPiecesOfOneWall)
+{
+	// Two walls along one line, each explaining half of 8 contacts: the merge leaves one wall
+	// with all of them, saves a wall's prior and is judged on the change of logJoint.
+	WallBoard w(8);
+	model::Blackboard& bb = w.b.bb;
+	const auto first = inference::proposeWall(bb, 0, 3);
+	ASSERT_TRUE(first.has_value());
+	model::Wall left = first->wall, right = first->wall;
+	left.x1 = 0.75, right.x0 = 1.0;  // the contacts at 0 .. 0.75 and 1.0 .. 1.75
+	const Id a = bb.addWall(left), b = bb.addWall(right);
+	for (size_t s = 0; s < 8; s++) bb.setShapeletWall(s, s < 4 ? a : b);
+	std::vector<Id> others;
+	inference::moves::WallMerge::candidates(bb, a, others);
+	ASSERT_EQ(others, std::vector<Id>{b});
+	inference::moves::WallMerge move(w.b.P);
+	const Proposal p = applied(w.b, move, [&] { return move.merge(w.b.ctx, a, b); });
+	EXPECT_GT(p.logTarget, 10);
+	EXPECT_FALSE(std::isfinite(p.logReverse));
+	ASSERT_EQ(bb.wallCount(), 1u);
+	EXPECT_EQ(bb.shapeletsOfWall(bb.shapeletWall(0)).size(), 8u);
+	EXPECT_NEAR(bb.wall(bb.shapeletWall(0)).length(), 1.75, 0.01);
+	// A wall 20 cm off the line, or 1 m further along, is not a candidate.
+	model::Wall off = right, far = right;
+	off.y0 += 0.2, off.y1 += 0.2, far.x0 += 1.5, far.x1 += 1.5;
+	bb.addWall(off), bb.addWall(far);
+	inference::moves::WallMerge::candidates(bb, bb.shapeletWall(0), others);
+	EXPECT_TRUE(others.empty());
+}
+
+TEST(WallMoves, MergedEvidenceScoresAllTheContacts)
+{
+	// Contacts of one wall folded in two lots (each with its own anchor and reference face,
+	// the second from the far face) and merged score as if folded into one.
+	const model::ModelParams p = wallParams();
+	const model::Wall wall{0, 0, 3, 0.1, 0.1, 0.3};
+	model::WallEvidence one, a, b;
+	for (int i = 0; i < 12; i++)
+	{
+		obs::Shapelet s;
+		const int side = i % 4 == 3 ? -1 : 1;
+		const model::Wall::FaceHit h = wall.face(0.25 * i, 0, side);
+		s.x = 0.25 * i, s.y = 0.1 * 0.25 * i / 3 + side * 0.05 + 0.002 * (i % 3 - 1);
+		s.normal = h.normal + 0.03 * (i % 2 ? 1 : -1), s.texture = 0.25 + 0.01 * i;
+		one.add(s, wall, p);
+		(i < 6 && side > 0 ? a : b).add(s, wall, p);
+	}
+	const model::WallEvidence merged = inference::moves::mergeEvidence(a, b);
+	EXPECT_EQ(merged.count(), one.count());
+	for (const model::Wall& at : {wall, model::Wall{-0.1, 0.02, 3.2, 0.08, 0.1, 0.35}, model::Wall{3, 0.1, 0, 0, 0.1, 0.3}})
+		EXPECT_NEAR(merged.logLikelihood(at, p), one.logLikelihood(at, p), 1e-6);
+	const model::Wall f = merged.fit(0.1), g = one.fit(0.1);
+	EXPECT_TRUE(f.sameAs(g, 1e-6));
 }

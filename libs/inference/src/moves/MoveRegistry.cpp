@@ -10,6 +10,7 @@
 #include <whiskermap/inference/moves/TableRefit.h>
 #include <whiskermap/inference/moves/WallBirthDeath.h>
 #include <whiskermap/inference/moves/WallLink.h>
+#include <whiskermap/inference/moves/WallMerge.h>
 #include <whiskermap/inference/moves/WallRefit.h>
 #include <whiskermap/model/Densities.h>
 
@@ -109,6 +110,23 @@ struct WallChild
 	}
 };
 
+/** A merge of w with a collinear wall touching it, drawn uniformly; the polish offers each. */
+struct WallJoin
+{
+	std::shared_ptr<WallMerge> move;
+	std::vector<Id> others;
+
+	void operator()(MoveContext& ctx, Id w)
+	{
+		WallMerge::candidates(ctx.bb, w, others);
+		if (others.empty()) return;
+		if (!ctx.greedy())
+			return (void)tryMove(ctx, *move, [&] { return move->merge(ctx, w, others[ctx.rng.pick(others.size())]); });
+		for (const Id v : others)
+			if (ctx.bb.hasWall(w) && ctx.bb.hasWall(v)) tryMove(ctx, *move, [&] { return move->merge(ctx, w, v); });
+	}
+};
+
 /** The wall birth for leg l: seeded at one of its shapelets, drawn uniformly. */
 struct WallForLeg
 {
@@ -165,5 +183,6 @@ MoveRegistry::MoveRegistry(const model::ModelParams& p)
 	m_entries.push_back({"wall child", Target::Wall, Slot::Child, 1, WallChild{}});
 	m_entries.push_back({"wall refit", Target::Wall, Slot::Refit, 1,
 						 [=](MoveContext& c, Id w) { tryMove(c, *wallRefit, [&] { return wallRefit->propose(c, w); }); }});
+	m_entries.push_back({"wall merge", Target::Wall, Slot::Parent, 1, WallJoin{std::make_shared<WallMerge>(p), {}}});
 }
 }  // namespace whiskermap::inference::moves
