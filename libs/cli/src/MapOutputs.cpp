@@ -1,6 +1,7 @@
 #include <sys/resource.h>
 
 #include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/opengl/CBox.h>
 #include <mrpt/opengl/CGridPlaneXY.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CPointCloud.h>
@@ -32,6 +33,13 @@ double percentile(std::vector<double> v, double q)
 	if (v.empty()) return 0;
 	std::sort(v.begin(), v.end());
 	return v[static_cast<size_t>(std::min<double>(v.size() - 1, std::floor(q * (v.size() - 1) + 0.5)))];
+}
+
+/** A wall of the map as a solid (pictures, octree). */
+world::Obstacle wallSolid(const model::Wall& w)
+{
+	const model::OrientedRect r = w.rect();
+	return world::Obstacle::rectangle({r.cx, r.cy}, r.theta, r.hx, r.hy, w.texture);
 }
 
 void drawTruth(render::TopDownImage& img, const world::World* w)
@@ -156,6 +164,16 @@ void MapOutputs::writeScene(const std::string& path) const
 	objs->setName("whiskermap");
 	m_map.getVisualizationInto(*objs);
 	scene.insert(objs);
+	for (const auto& w : m_map.mapWalls())  // the map's walls as boxes up to the table height
+	{
+		const model::OrientedRect r = w.wall.rect();
+		auto box = mrpt::opengl::CBox::Create(
+			mrpt::math::TPoint3D(-r.hx, -r.hy, 0), mrpt::math::TPoint3D(r.hx, r.hy, m_map.renderOptions.table_height));
+		box->setPose(mrpt::poses::CPose3D(r.cx, r.cy, 0, r.theta, 0, 0));
+		box->setColor(0.6f, 0.6f, 0.6f);
+		box->setName("wall");
+		scene.insert(box);
+	}
 	auto contacts = mrpt::opengl::CPointCloud::Create();
 	contacts->setName("contacts");
 	for (const auto& s : m_shapelets.items()) contacts->insertPoint(s.x, s.y, 0.05);
@@ -181,6 +199,9 @@ std::string MapOutputs::finish(double wallSeconds)
 	const bool withClass = !m_map.modelParams.classes.empty();
 	maps::MapCsv::writeObjects(m_out.path("map_tables.csv"), objects, withClass);
 	maps::MapCsv::writeObjects(m_out.path("map_candidates.csv"), candidates, withClass);
+	std::vector<world::Obstacle> walls;  // the map's walls, when the model has them
+	for (const auto& w : m_map.mapWalls()) walls.push_back(wallSolid(w.wall));
+	if (m_map.modelParams.walls) maps::MapCsv::writeWalls(m_out.path("map_walls.csv"), m_map.mapWalls());
 
 	const std::string source = std::filesystem::path(m_s.input).filename().string();
 	if (m_perPose)
@@ -193,6 +214,7 @@ std::string MapOutputs::finish(double wallSeconds)
 
 	drawTruth(m_contacts, m_s.world);
 	for (const auto& t : mapped) m_contacts.table(t, ESTIMATE, 2);
+	for (const auto& w : walls) m_contacts.quad(w.corners, ESTIMATE, 2);
 	char threshold[64];
 	if (m_map.lasting())
 		std::snprintf(threshold, sizeof(threshold), "existence >= %g", m_map.likelihoodOptions.min_existence);
@@ -206,7 +228,7 @@ std::string MapOutputs::finish(double wallSeconds)
 	writeScene(m_out.path("map.3Dscene"));
 	const auto& ro = m_map.renderOptions;
 	render::OcTreeExport::write(
-		mapped, {ro.octomap_resolution, ro.table_height, ro.top_thickness}, m_out.path("map.bt"));
+		mapped, walls, {ro.octomap_resolution, ro.table_height, ro.top_thickness}, m_out.path("map.bt"));
 	if (m_simpleMap) m_simpleMap->close();
 
 	std::string metricsJson, text;

@@ -115,7 +115,8 @@ int WhiskerMapApp::main(int argc, char** argv)
 		"whisker-map: map tables from whisker contacts. Runs a CHierarchicalObjectMap (Fox & "
 		"Prescott's hierarchical model and annealed blackboard sampler) over every whisker sweep "
 		"of a rawlog (either MRPT layout) and writes, in OUTDIR: map_tables.csv (the map), "
-		"map_candidates.csv, map.png, map.3Dscene, map.bt (OctoMap), summary.json, with --world "
+		"map_candidates.csv, map.png, map.3Dscene, map.bt (OctoMap), summary.json, with the model key "
+		"walls map_walls.csv, with --world "
 		"metrics.json, and in the per-pose mode per_pose_tables.csv and montage.png (doc/outputs.md)."};
 	Options o;
 	app.add_option("-i,--input", o.input, "Input rawlog with CObservationWhiskerContacts sweeps")->required();

@@ -1,4 +1,5 @@
 #include <whiskermap/inference/BlackboardSampler.h>
+#include <whiskermap/model/Densities.h>
 #include <whiskermap/model/Posterior.h>
 
 #include <limits>
@@ -84,7 +85,7 @@ void BlackboardSampler::associate()
 {
 	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
 	{
-		if (m_bb.shapeletParent(s) != NONE) continue;
+		if (m_bb.explained(s)) continue;
 		m_ctx.legsNearShapelet(s, m_candidates);
 		Id bestLeg = NONE;
 		double bestGain = 0;
@@ -98,10 +99,16 @@ void BlackboardSampler::associate()
 			m_bb.setLeg(l, old);
 			if (gain > bestGain) bestGain = gain, bestLeg = l;
 		}
+		const Id bestWall = bestWallFor(s, bestGain);
 		const Id id = m_bb.addLeg(m_ctx.newLegFor(s));
 		m_bb.setShapeletParent(s, id);
 		if (model::logOddsLeg(m_bb, id) > bestGain) continue;  // the new leg stays
 		m_bb.removeLeg(id);
+		if (bestWall != NONE)
+		{
+			m_bb.setShapeletWall(s, bestWall);
+			continue;
+		}
 		if (bestLeg == NONE) continue;
 		m_bb.setShapeletParent(s, bestLeg);
 		double ignored = 0;
@@ -124,7 +131,7 @@ void BlackboardSampler::sweep(double beta)
 	m_ctx.beta = beta;
 	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
 		for (const moves::MoveEntry& e : m_moves.entries())
-			if (e.target == moves::Target::Shapelet && m_bb.shapeletParent(s) == NONE) e.visit(m_ctx, static_cast<Id>(s));
+			if (e.target == moves::Target::Shapelet && !m_bb.explained(s)) e.visit(m_ctx, static_cast<Id>(s));
 
 	m_tableOrder.clear();
 	m_legOrder.clear();
@@ -136,12 +143,21 @@ void BlackboardSampler::sweep(double beta)
 		if (m_bb.hasTable(t)) visit(moves::Target::Table, t);
 	for (const Id l : m_legOrder)
 		if (m_bb.hasLeg(l)) visit(moves::Target::Leg, l);
+	m_wallOrder.clear();
+	for (Id w = 0; w < m_bb.wallIdBound(); w++)
+		if (m_bb.hasWall(w)) m_wallOrder.push_back(w);
+	for (const Id w : m_wallOrder)
+		if (m_bb.hasWall(w)) visit(moves::Target::Wall, w);
 	prune();
 }
 
 void BlackboardSampler::visit(moves::Target target, Id id)
 {
-	const auto alive = [&] { return target == moves::Target::Table ? m_bb.hasTable(id) : m_bb.hasLeg(id); };
+	const auto alive = [&] {
+		return target == moves::Target::Table ? m_bb.hasTable(id)
+			   : target == moves::Target::Leg ? m_bb.hasLeg(id)
+											   : m_bb.hasWall(id);
+	};
 	const double u = m_rng.uniform();
 	for (const moves::MoveEntry& e : m_moves.entries())
 	{
@@ -170,5 +186,23 @@ void BlackboardSampler::prune()
 	}
 	for (Id t = 0; t < m_bb.tableIdBound(); t++)
 		if (m_bb.hasTable(t) && !m_tableSupported[t]) m_bb.removeTable(t);
+	for (Id w = 0; w < m_bb.wallIdBound(); w++)
+		if (m_bb.hasWall(w) && !m_bb.wallExplains(w)) m_bb.removeWall(w);
+}
+
+// The wall whose link gain for unexplained shapelet s (eq. 22 against the null cause) beats
+// `gain` most, or NONE; raises `gain` to it.
+Id BlackboardSampler::bestWallFor(size_t s, double& gain) const
+{
+	Id best = NONE;
+	for (Id w = 0; w < m_bb.wallIdBound(); w++)
+	{
+		if (!m_bb.hasWall(w)) continue;
+		const double g = model::logNoisyOr(model::logShapeletGivenWall(m_bb.shapelets()[s], m_bb.wall(w), m_model),
+										   model::logShapeletNull(m_model)) -
+						 model::logShapeletNull(m_model);
+		if (g > gain) gain = g, best = w;
+	}
+	return best;
 }
 }  // namespace whiskermap::inference

@@ -115,6 +115,15 @@ std::vector<TMappedObject> CHierarchicalObjectMap::candidateObjects() const
 	return out;
 }
 
+std::vector<model::LastingState::StoredWall> CHierarchicalObjectMap::mapWalls() const
+{
+	std::vector<model::LastingState::StoredWall> out;
+	if (!lasting()) return out;
+	for (const auto& w : m_lasting.state().walls())
+		if (w.existence >= likelihoodOptions.min_existence) out.push_back(w);
+	return out;
+}
+
 std::vector<world::Table> CHierarchicalObjectMap::mapTables() const
 {
 	std::vector<world::Table> tables;

@@ -1,6 +1,7 @@
 // CHierarchicalObjectMap: versioned MRPT serialization (doc/map-plugin.md). Version 0 (no
 // lasting map) still loads, as a per-pose map; version 1 (no shaft directions) as contacts
-// without a known shaft; versions before 3 with the lasting tables reported at their own poses.
+// without a known shaft; versions before 3 with the lasting tables reported at their own poses;
+// versions before 4 without walls (walls = false).
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/model/ObjectCatalogue.h>
@@ -139,6 +140,34 @@ void writeClasses(CArchive& out, const model::ModelParams& m, const model::Lasti
 		if (s.hasTable(t)) out.WriteAs<int32_t>(s.table(t).cls);
 }
 
+/** Version 4: the wall keys of the model and the lasting map's walls. */
+void writeWalls(CArchive& out, const model::ModelParams& m, const model::LastingState& s)
+{
+	out << m.walls << m.c_W << m.wall_length_scale << m.wall_thickness;
+	out.WriteAs<uint32_t>(s.walls().size());
+	for (const auto& w : s.walls())
+	{
+		out << w.wall.x0 << w.wall.y0 << w.wall.x1 << w.wall.y1 << w.wall.thickness << w.wall.texture << w.existence;
+		for (const double v : w.evidence.stats()) out << v;
+		out << w.evidence.count();
+	}
+}
+
+void readWalls(CArchive& in, model::ModelParams& m, std::vector<model::LastingState::StoredWall>& walls)
+{
+	in >> m.walls >> m.c_W >> m.wall_length_scale >> m.wall_thickness;
+	const auto n = in.ReadAs<uint32_t>();
+	if (n > (1u << 24)) THROW_EXCEPTION("CHierarchicalObjectMap: corrupt stream (too many walls)");
+	walls.resize(n);
+	for (auto& w : walls)
+	{
+		in >> w.wall.x0 >> w.wall.y0 >> w.wall.x1 >> w.wall.y1 >> w.wall.thickness >> w.wall.texture >> w.existence;
+		std::array<double, model::WallEvidence::STATS> v{};
+		for (double& x : v) in >> x;
+		w.evidence = model::WallEvidence::fromStats(v, in.ReadAs<uint32_t>());
+	}
+}
+
 /** Version 3: the catalogue and the class of each lasting table (older streams: class 0). */
 void readClasses(CArchive& in, model::ModelParams& m, LastingParts& parts)
 {
@@ -155,7 +184,7 @@ void readClasses(CArchive& in, model::ModelParams& m, LastingParts& parts)
 }
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 3; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 4; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -201,6 +230,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	// rigid fits; the object catalogue and the lasting tables' classes.
 	out << l.rigid_pose;
 	writeClasses(out, m, m_lasting.state());
+	// Version 4: walls.
+	writeWalls(out, m, m_lasting.state());
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -211,6 +242,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 1:
 		case 2:
 		case 3:
+		case 4:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -264,10 +296,18 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 			if (version >= 3) in >> insertionOptions.lasting.rigid_pose;
 			m.classes.clear();  // versions 0 to 2: one class, the known table
 			if (version >= 3) readClasses(in, m, lasting);
+			const model::ModelParams noWalls;  // versions before 4: no walls
+			m.walls = noWalls.walls, m.c_W = noWalls.c_W, m.wall_length_scale = noWalls.wall_length_scale;
+			m.wall_thickness = noWalls.wall_thickness;
+			std::vector<model::LastingState::StoredWall> walls;
+			if (version >= 4) readWalls(in, m, walls);
 			if (version >= 1)
+			{
 				m_lasting.state().restore(
 					lasting.tables, lasting.existence, lasting.reported, lasting.legs, lasting.evidence, lasting.contacts,
 					lasting.seq, m);
+				m_lasting.state().restoreWalls(walls);
+			}
 			m_consolidator.setObjects(std::move(objs));
 			m_consolidator.setOptions(c);
 		}

@@ -1,5 +1,6 @@
 #include <whiskermap/inference/RigidTableFit.h>
 #include <whiskermap/maps/LastingMap.h>
+#include <whiskermap/model/Posterior.h>
 
 #include <algorithm>
 #include <cmath>
@@ -70,6 +71,15 @@ std::vector<double> LastingMap::existence(
 	return out;
 }
 
+std::vector<double> LastingMap::wallExistence(const model::Blackboard& solved)
+{
+	// P(W) = 1 / (1 + exp(-s_W)), s_W the wall's log-odds against its contacts' null cause (eq. 20).
+	std::vector<double> out(static_cast<size_t>(solved.wallIdBound()), 0.0);
+	for (model::Id w = 0; w < solved.wallIdBound(); w++)
+		if (solved.hasWall(w)) out[static_cast<size_t>(w)] = model::annealedAcceptance(model::logOddsWall(solved, w), 1);
+	return out;
+}
+
 void LastingMap::refitReported(const model::ModelParams& model)
 {
 	// Region tables whose fit data did not change keep their pose (refitting gives the same).
@@ -132,7 +142,7 @@ LastingMap::TStats LastingMap::insert(
 			if (sameFitData(board, solved, b))
 				m_carry.emplace_back(b, m_state.reported(m_region->tables[static_cast<size_t>(b)]));
 	}
-	m_state.replace(*m_region, solved, existence(board, solved, model), m_newTables, m_newLegs);
+	m_state.replace(*m_region, solved, existence(board, solved, model), m_newTables, m_newLegs, wallExistence(solved), model);
 	for (const model::Id l : m_newLegs)
 		if (l != model::NONE) m_state.fold(l, m_options.contacts_per_leg, model);
 	for (const model::Id c : m_new)

@@ -31,6 +31,16 @@ void writeTable(FILE* f, const world::Table& t)
 }
 }  // namespace
 
+void MapCsv::writeWalls(const std::string& path, const std::vector<model::LastingState::StoredWall>& walls)
+{
+	writeFile(path, "x0,y0,x1,y1,thickness,existence", [&](FILE* f) {
+		for (const auto& w : walls)
+			std::fprintf(
+				f, "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n", w.wall.x0, w.wall.y0, w.wall.x1, w.wall.y1, w.wall.thickness,
+				w.existence);
+	});
+}
+
 void MapCsv::writeObjects(const std::string& path, const std::vector<TMappedObject>& objects, bool withClass)
 {
 	const char* header = withClass ? "id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs,class"

@@ -26,6 +26,8 @@ void Blackboard::reset(const std::vector<obs::Shapelet>& shapelets)
 {
 	m_shapelets.assign(shapelets.begin(), shapelets.end());
 	m_shapeletParent.assign(shapelets.size(), NONE);
+	m_shapeletWall.assign(shapelets.size(), NONE);
+	m_walls.clear();
 	m_tables.clear();
 	m_legs.clear();
 	// Per-id side tables (children, evidence, dormancy) keep their storage: add*() resets an
@@ -120,6 +122,35 @@ void Blackboard::setShapeletParent(size_t shapelet, Id leg)
 	if (parent != NONE) eraseValue(m_legShapelets[parent], static_cast<Id>(shapelet));
 	parent = leg;
 	if (leg != NONE) insertSorted(m_legShapelets[leg], static_cast<Id>(shapelet));
+	if (leg != NONE && m_shapeletWall[shapelet] != NONE) setShapeletWall(shapelet, NONE);
+}
+
+Id Blackboard::addWall(const Wall& w, const WallEvidence& evidence)
+{
+	const Id id = m_walls.add(w);
+	const auto n = static_cast<size_t>(m_walls.capacity());
+	if (m_wallShapelets.size() < n) m_wallShapelets.resize(n), m_wallEvidence.resize(n);
+	m_wallShapelets[id].clear();
+	m_wallEvidence[id] = evidence;
+	return id;
+}
+
+void Blackboard::removeWall(Id id)
+{
+	for (const Id s : m_wallShapelets[id]) m_shapeletWall[static_cast<size_t>(s)] = NONE;
+	m_wallShapelets[id].clear();
+	m_wallEvidence[id] = {};
+	m_walls.remove(id);
+}
+
+void Blackboard::setShapeletWall(size_t shapelet, Id wall)
+{
+	Id& current = m_shapeletWall[shapelet];
+	if (current != NONE) eraseValue(m_wallShapelets[current], static_cast<Id>(shapelet));
+	current = wall;
+	if (wall == NONE) return;
+	insertSorted(m_wallShapelets[wall], static_cast<Id>(shapelet));
+	if (m_shapeletParent[shapelet] != NONE) setShapeletParent(shapelet, NONE);
 }
 
 void Blackboard::setTable(Id id, const Table& t)

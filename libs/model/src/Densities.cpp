@@ -131,6 +131,41 @@ double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelPara
 	return core::cachedLog(p.alpha_S) - best - sq((l.texture - s.texture) / p.sigma_tau);  // eq. 7
 }
 
+namespace
+{
+/** Delta_WS of eq. 22 against face `side`, without the texture term. */
+double wallFaceCost(const obs::Shapelet& s, const Wall& w, int side, const ModelParams& p)
+{
+	const Wall::FaceHit h = w.face(s.x, s.y, side);
+	const double a = core::wrapToPi(s.normal - h.normal);
+	double position = (sq(h.across) + sq(h.excess)) / sq(p.sigma_r);
+	if (p.shaft_noise && s.hasShaft())
+	{
+		// across the face: the shaft's variance along the face normal; along it: along the face
+		const double nx = std::cos(h.normal), ny = std::sin(h.normal);
+		const double va = contactVariance(s, nx, ny, p), vl = contactVariance(s, -ny, nx, p);
+		position = sq(h.across) / va + sq(h.excess) / vl - 0.5 * std::log(sq(p.sigma_r) / va);
+	}
+	return position + sq(a / p.sigma_theta);
+}
+}  // namespace
+
+double logShapeletGivenWall(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
+{
+	const double best = std::min(wallFaceCost(s, w, 1, p), wallFaceCost(s, w, -1, p));
+	return core::cachedLog(p.alpha_S) - best - sq((w.texture - s.texture) / p.sigma_tau);  // eq. 22
+}
+
+int bestWallFace(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
+{
+	return wallFaceCost(s, w, 1, p) <= wallFaceCost(s, w, -1, p) ? 1 : -1;
+}
+
+double logWallPrior(const Wall& w, const ModelParams& p)
+{
+	return 4 * core::cachedLog(2 * p.delta) + std::log(p.c_W) - w.length() / p.wall_length_scale;  // eq. 23
+}
+
 double logLegNull(const ModelParams& p) { return core::cachedLog(p.c_L); }  // eq. 8
 double logShapeletNull(const ModelParams& p) { return core::cachedLog(p.c_S); }  // eq. 9
 }  // namespace whiskermap::model

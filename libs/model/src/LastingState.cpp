@@ -189,6 +189,18 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 	std::sort(out.contacts.begin(), out.contacts.end(), [&](Id a, Id b) { return m_contacts[a].seq < m_contacts[b].seq; });
 	std::sort(contextTables.begin(), contextTables.end(), byPose(m_tables));
 	std::sort(contextLegs.begin(), contextLegs.end(), byPose(m_legs));
+	// Walls whose slab comes within the board radius of a new contact (in store order).
+	out.walls.clear();
+	for (size_t w = 0; w < m_walls.size(); w++)
+	{
+		const OrientedRect r = m_walls[w].wall.rect();
+		for (const Id a : around)
+			if (r.perimeter(m_contacts[a].shapelet.x, m_contacts[a].shapelet.y).distance <= radii.board)
+			{
+				out.walls.push_back(w);
+				break;
+			}
+	}
 
 	// The board; m_tableBoard and m_legBoard map store ids to board ids for this extraction.
 	std::vector<obs::Shapelet> shapelets;
@@ -210,6 +222,7 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 		const Id l = m_contacts[out.contacts[i]].leg;
 		if (l != NONE) bb.setShapeletParent(i, m_legBoard[static_cast<size_t>(l)]);
 	}
+	for (const size_t w : out.walls) bb.addWall(m_walls[w].wall, m_walls[w].evidence);
 	// Dormant: everything but the visited legs and tables.
 	for (size_t i = 0; i < out.tables.size(); i++) bb.setTableDormant(static_cast<Id>(i), true);
 	for (size_t i = 0; i < out.legs.size(); i++) bb.setLegDormant(static_cast<Id>(i), true);
@@ -221,8 +234,19 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 
 void LastingState::replace(
 	const Region& r, const Blackboard& solved, const std::vector<double>& existence, std::vector<Id>& newTables,
-	std::vector<Id>& newLegs)
+	std::vector<Id>& newLegs, const std::vector<double>& wallExistence, const ModelParams& model)
 {
+	// The region's walls, by descending index (erasing keeps the lower indices).
+	std::vector<size_t> gone = r.walls;
+	std::sort(gone.rbegin(), gone.rend());
+	for (const size_t w : gone) m_walls.erase(m_walls.begin() + static_cast<std::ptrdiff_t>(w));
+	std::vector<size_t> wallIndex(static_cast<size_t>(solved.wallIdBound()), 0);
+	for (Id w = 0; w < solved.wallIdBound(); w++)
+	{
+		if (!solved.hasWall(w)) continue;
+		wallIndex[static_cast<size_t>(w)] = m_walls.size();
+		m_walls.push_back({solved.wall(w), solved.wallEvidence(w), wallExistence.at(static_cast<size_t>(w))});
+	}
 	for (const Id l : r.legs) removeLeg(l);
 	for (const Id t : r.tables) removeTable(t);
 	newTables.assign(static_cast<size_t>(solved.tableIdBound()), NONE);
@@ -238,8 +262,14 @@ void LastingState::replace(
 	}
 	for (size_t i = 0; i < r.contacts.size(); i++)
 	{
-		const Id l = solved.shapeletParent(i);
+		const Id l = solved.shapeletParent(i), w = solved.shapeletWall(i);
 		setContactLeg(r.contacts[i], l == NONE ? NONE : newLegs[l]);
+		if (w == NONE) continue;
+		// A contact a wall explains is folded into the wall's evidence and leaves the store.
+		StoredWall& sw = m_walls[wallIndex[static_cast<size_t>(w)]];
+		sw.evidence.add(m_contacts[r.contacts[i]].shapelet, sw.wall, model);
+		m_contactGrid.erase(r.contacts[i], m_contacts[r.contacts[i]].shapelet.x, m_contacts[r.contacts[i]].shapelet.y);
+		m_contacts.remove(r.contacts[i]);
 	}
 }
 

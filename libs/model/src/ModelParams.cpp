@@ -32,6 +32,10 @@ ModelParams ModelParams::fromIni(core::IniSection& sec)
 	p.parent_gate = sec.number("parent_gate", 1e-6, 100);
 	p.free_space = sec.boolean("free_space", p.free_space);
 	p.free_space_p_miss = sec.number("free_space_p_miss", p.free_space_p_miss, 1e-12, 1);
+	p.walls = sec.boolean("walls", p.walls);
+	p.c_W = sec.number("c_W", p.c_W, 1e-300, BIG);
+	p.wall_length_scale = sec.number("wall_length_scale", p.wall_length_scale, 1e-3, 1e6);
+	p.wall_thickness = sec.number("wall_thickness", p.wall_thickness, 1e-3, 10);
 	const std::string objects = sec.text("objects", "");
 	sec.finish();
 	if (!objects.empty())
@@ -65,7 +69,8 @@ bool ModelParams::operator==(const ModelParams& o) const
 		return std::tie(
 			p.sigma_r, p.sigma_theta, p.sigma_w, p.sigma_tau, p.shaft_noise, p.sigma_across, p.c_T, p.c_L, p.c_S,
 			p.alpha_L, p.alpha_S, p.epsilon, p.delta, p.table_length, p.table_width, p.leg_width, p.texture,
-			p.parent_gate, p.free_space, p.free_space_p_miss, p.classes);
+			p.parent_gate, p.free_space, p.free_space_p_miss, p.walls, p.c_W, p.wall_length_scale, p.wall_thickness,
+			p.classes);
 	};
 	return tie(*this) == tie(o);
 }

@@ -27,6 +27,14 @@ double logShapeletDensity(const Blackboard& bb, size_t s, Id leg)
 	return logNoisyOr(cause, logShapeletNull(p));
 }
 
+// The walls whose slab shares interior points with rectangle r (eq. 16 between a leg and a wall).
+int overlappingWalls(const Blackboard& bb, const OrientedRect& r)
+{
+	int n = 0;
+	for (Id w = 0; w < bb.wallIdBound(); w++) n += bb.hasWall(w) && r.overlaps(bb.wall(w).rect());
+	return n;
+}
+
 // Same-type overlaps of table t (leg l) with the board's other hypotheses and, separately,
 // with the context objects (eq. 16).
 struct Overlaps
@@ -56,6 +64,7 @@ Overlaps overlappingLegs(const Blackboard& bb, Id l)
 	bb.forEachContextLegNear(r.cx, r.cy, reach, [&](Id o) {
 		n.context += r.overlaps(legRect(bb.contextLegs()[static_cast<size_t>(o)]));
 	});
+	n.context += overlappingWalls(bb, r);  // a leg standing in a wall: counted once, from the leg
 	return n;
 }
 
@@ -76,7 +85,23 @@ double evidenceGain(const Blackboard& bb, Id l)
 	const LegEvidence& e = bb.evidence(l);
 	return e.empty() ? 0 : e.logLikelihood(bb.leg(l), bb.params()) - e.count() * logShapeletNull(bb.params());
 }
+// The folded contacts of a wall against their null cause (eqs. 22, 9, 12), as evidenceGain.
+double wallEvidenceGain(const Blackboard& bb, Id w)
+{
+	const WallEvidence& e = bb.wallEvidence(w);
+	return e.empty() ? 0 : e.logLikelihood(bb.wall(w), bb.params()) - e.count() * logShapeletNull(bb.params());
+}
 }  // namespace
+
+// log p(S | pa(S)) of shapelet s as the board links it: its leg (eq. 7) or its wall (eq. 22),
+// or'ed with the null cause (eqs. 9, 12).
+double logShapeletLinked(const Blackboard& bb, size_t s)
+{
+	const Id w = bb.shapeletWall(s);
+	if (w == NONE) return logShapeletDensity(bb, s, bb.shapeletParent(s));
+	const ModelParams& p = bb.params();
+	return logNoisyOr(logShapeletGivenWall(bb.shapelets()[s], bb.wall(w), p), logShapeletNull(p));
+}
 
 double logJoint(const Blackboard& bb)
 {
@@ -99,8 +124,9 @@ double logJoint(const Blackboard& bb)
 		const Overlaps o = overlappingLegs(bb, l);
 		boardPairs += o.board, contextPairs += o.context;
 	}
-	for (size_t s = 0; s < bb.shapelets().size(); s++)
-		sum += logShapeletDensity(bb, s, bb.shapeletParent(s));
+	for (Id w = 0; w < bb.wallIdBound(); w++)
+		if (bb.hasWall(w)) sum += logWallPrior(bb.wall(w), p) + wallEvidenceGain(bb, w);  // eq. 23
+	for (size_t s = 0; s < bb.shapelets().size(); s++) sum += logShapeletLinked(bb, s);
 	return sum + logOverlap(boardPairs / 2 + contextPairs, p);
 }
 
@@ -124,6 +150,7 @@ double logJointAround(const Blackboard& bb, Id table)
 		bb.forEachContextLegNear(r.cx, r.cy, std::hypot(r.hx, r.hy) + bb.maxLegRadius(), [&](Id o) {
 			pairs += r.overlaps(legRect(bb.contextLegs()[static_cast<size_t>(o)]));
 		});
+		pairs += overlappingWalls(bb, r);
 	}
 	return sum + logOverlap(pairs, p);
 }
@@ -162,6 +189,20 @@ double logOddsLeg(const Blackboard& bb, Id leg)
 				 logOverlap(o.board + o.context, p) + evidenceGain(bb, leg) + freeSpace(bb, leg);
 	for (const Id s : bb.shapeletsOf(leg)) sum += logShapeletLinkGain(bb, static_cast<size_t>(s), leg);
 	return sum;
+}
+
+double logOddsWall(const Blackboard& bb, Id wall)
+{
+	const ModelParams& p = bb.params();
+	const Wall& w = bb.wall(wall);
+	double sum = logWallPrior(w, p) + wallEvidenceGain(bb, wall);  // eq. 23
+	for (const Id s : bb.shapeletsOfWall(wall))
+		sum += logNoisyOr(logShapeletGivenWall(bb.shapelets()[static_cast<size_t>(s)], w, p), logShapeletNull(p)) -
+			   logShapeletNull(p);
+	int legs = 0;
+	const OrientedRect r = w.rect();
+	for (Id l = 0; l < bb.legIdBound(); l++) legs += bb.hasLeg(l) && legRect(bb.leg(l)).overlaps(r);
+	return sum + logOverlap(legs, p);
 }
 
 double annealedAcceptance(double logOdds, double beta)

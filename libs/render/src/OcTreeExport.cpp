@@ -39,9 +39,32 @@ double OcTreeExport::range(double resolution) { return resolution * 32767; }
 
 size_t OcTreeExport::write(const std::vector<world::Table>& tables, const TOptions& o, const std::string& path)
 {
+	return write(tables, {}, o, path);
+}
+
+size_t OcTreeExport::write(
+	const std::vector<world::Table>& tables, const std::vector<world::Obstacle>& walls, const TOptions& o,
+	const std::string& path)
+{
 	octomap::OcTree tree(o.resolution);
 	size_t occupied = 0;
 	const double r = o.resolution;
+	for (const auto& w : walls)
+	{
+		double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+		for (const auto& c : w.corners)
+			x0 = std::min(x0, c.x()), x1 = std::max(x1, c.x()), y0 = std::min(y0, c.y()), y1 = std::max(y1, c.y());
+		if (std::max({-x0, x1, -y0, y1}) >= range(r)) throw core::Error(path + ": a wall lies beyond the octree's range");
+		const auto cell = [&](double v) { return static_cast<int64_t>(std::floor(v / r)); };
+		for (int64_t i = cell(x0); (i + 0.5) * r <= x1; i++)
+			for (int64_t j = cell(y0); (j + 0.5) * r <= y1; j++)
+			{
+				const double x = (i + 0.5) * r, y = (j + 0.5) * r;
+				if (w.distance(Eigen::Vector2d(x, y)) > 0) continue;
+				for (int64_t k = 0; (k + 0.5) * r <= o.height; k++, occupied++)
+					tree.updateNode(octomap::point3d(float(x), float(y), float((k + 0.5) * r)), true);
+			}
+	}
 	for (const auto& t : tables)
 	{
 		std::array<world::Obstacle, 4> legs;

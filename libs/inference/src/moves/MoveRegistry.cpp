@@ -8,6 +8,10 @@
 #include <whiskermap/inference/moves/TableBirthDeath.h>
 #include <whiskermap/inference/moves/TableClassSwitch.h>
 #include <whiskermap/inference/moves/TableRefit.h>
+#include <whiskermap/inference/moves/WallBirthDeath.h>
+#include <whiskermap/inference/moves/WallLink.h>
+#include <whiskermap/inference/moves/WallMerge.h>
+#include <whiskermap/inference/moves/WallRefit.h>
 #include <whiskermap/model/Densities.h>
 
 #include <memory>
@@ -84,12 +88,56 @@ struct LegChild
 		const model::OrientedRect r = model::legRect(bb.leg(l));
 		candidates.clear();
 		for (size_t s = 0; s < bb.shapelets().size(); s++)
-			if (bb.shapeletParent(s) != l &&
+			if (bb.shapeletParent(s) != l && bb.shapeletWall(s) == model::NONE &&
 				r.perimeter(bb.shapelets()[s].x, bb.shapelets()[s].y).distance <= ctx.mp.parent_gate)
 				candidates.push_back(static_cast<Id>(s));
 		if (candidates.empty()) return;
 		const auto s = static_cast<size_t>(candidates[ctx.rng.pick(candidates.size())]);
 		ctx.judge(link, link.link(ctx, s, l, Move::Child));
+	}
+};
+/** Q(ch(W) | W): half the time a link of a nearby shapelet to w, else a release of one of
+ *  its shapelets; the polish offers every link. */
+struct WallChild
+{
+	std::shared_ptr<WallLink> move = std::make_shared<WallLink>();
+
+	void operator()(MoveContext& ctx, Id w)
+	{
+		if (ctx.greedy()) return move->polish(ctx, w);
+		if (ctx.rng.uniform() < 0.5) tryMove(ctx, *move, [&] { return move->link(ctx, w); });
+		else tryMove(ctx, *move, [&] { return move->release(ctx, w); });
+	}
+};
+
+/** A merge of w with a collinear wall touching it, drawn uniformly; the polish offers each. */
+struct WallJoin
+{
+	std::shared_ptr<WallMerge> move;
+	std::vector<Id> others;
+
+	void operator()(MoveContext& ctx, Id w)
+	{
+		WallMerge::candidates(ctx.bb, w, others);
+		if (others.empty()) return;
+		if (!ctx.greedy())
+			return (void)tryMove(ctx, *move, [&] { return move->merge(ctx, w, others[ctx.rng.pick(others.size())]); });
+		for (const Id v : others)
+			if (ctx.bb.hasWall(w) && ctx.bb.hasWall(v)) tryMove(ctx, *move, [&] { return move->merge(ctx, w, v); });
+	}
+};
+
+/** The wall birth for leg l: seeded at one of its shapelets, drawn uniformly. */
+struct WallForLeg
+{
+	std::shared_ptr<WallBirthDeath> move;
+
+	void operator()(MoveContext& ctx, Id l)
+	{
+		const std::vector<Id>& own = ctx.bb.shapeletsOf(l);
+		if (own.empty()) return;
+		const auto s = static_cast<size_t>(own[ctx.rng.pick(own.size())]);
+		tryMove(ctx, *move, [&] { return move->birth(ctx, s); });
 	}
 };
 }  // namespace
@@ -126,5 +174,15 @@ MoveRegistry::MoveRegistry(const model::ModelParams& p)
 		{"leg pose search", Target::Leg, Slot::PolishLastSweep, 1,
 		 [](MoveContext& c, Id l) { c.count(Move::Refit, searchLegPose(c.bb, l, 1e-9) > 0); }},
 	};
+	if (!p.walls) return;  // without walls the sweep is the paper's, draw for draw
+	const auto walls = std::make_shared<WallBirthDeath>(p);
+	const auto wallRefit = std::make_shared<WallRefit>();
+	m_entries.push_back({"wall for leg", Target::Leg, Slot::Parent, 1, WallForLeg{walls}});
+	m_entries.push_back({"wall death", Target::Wall, Slot::Death, 1,
+						 [=](MoveContext& c, Id w) { tryMove(c, *walls, [&] { return walls->death(c, w); }); }});
+	m_entries.push_back({"wall child", Target::Wall, Slot::Child, 1, WallChild{}});
+	m_entries.push_back({"wall refit", Target::Wall, Slot::Refit, 1,
+						 [=](MoveContext& c, Id w) { tryMove(c, *wallRefit, [&] { return wallRefit->propose(c, w); }); }});
+	m_entries.push_back({"wall merge", Target::Wall, Slot::Parent, 1, WallJoin{std::make_shared<WallMerge>(p), {}}});
 }
 }  // namespace whiskermap::inference::moves

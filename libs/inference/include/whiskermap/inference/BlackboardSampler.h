@@ -58,6 +58,7 @@ class BlackboardSampler
 	/** If the board beats the best so far, it becomes the MAP candidate. */
 	void checkpoint(StepResult& result);
 	void prune();
+	model::Id bestWallFor(size_t s, double& gain) const;
 
 	model::ModelParams m_model;
 	SamplerParams m_params;
@@ -68,7 +69,7 @@ class BlackboardSampler
 	moves::MoveRegistry m_moves;
 
 	// Scratch, reused across calls (no per-move heap churn once warm).
-	std::vector<model::Id> m_tableOrder, m_legOrder, m_candidates;
+	std::vector<model::Id> m_tableOrder, m_legOrder, m_wallOrder, m_candidates;
 	model::Blackboard m_best;  ///< the best board at the coldest temperature (the MAP)
 	std::vector<uint8_t> m_legSupported, m_tableSupported;
 };

@@ -103,6 +103,9 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	/** Everything else the map considered: tables below min_existence, objects below
 	 *  min_support or overlapping a better one (map_candidates.csv). */
 	std::vector<TMappedObject> candidateObjects() const;
+	/** Lasting mode with the model's walls: the walls with existence >= min_existence
+	 *  (map_walls.csv); empty otherwise. */
+	std::vector<model::LastingState::StoredWall> mapWalls() const;
 	/** The tables of mapObjects(). */
 	std::vector<world::Table> mapTables() const;
 	/** The lasting state (lasting mode). */

@@ -86,6 +86,8 @@ class LastingMap
 	/** Existence of each table of `solved` (grown from `start`, the region's board). */
 	std::vector<double> existence(
 		const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model);
+	/** Existence of each wall of `solved`: the logistic of its log-odds (model::logOddsWall). */
+	static std::vector<double> wallExistence(const model::Blackboard& solved);
 	/** Refits the reported pose of every table whose legs the last replace() may have changed:
 	 *  the region's (but those in m_carry, whose legs explain the same contacts as before:
 	 *  they keep their pose), and those its legs stood under before (m_refit) or stand under now. */

@@ -1,6 +1,7 @@
 #pragma once
 #include <whiskermap/maps/TMappedObject.h>
 #include <whiskermap/maps/TPoseRecord.h>
+#include <whiskermap/model/LastingState.h>
 
 #include <string>
 #include <vector>
@@ -17,6 +18,9 @@ struct MapCsv
 	static void writeObjects(const std::string& path, const std::vector<TMappedObject>& objects, bool withClass = false);
 	/** `pose,x,y,yaw_deg,length,width,leg_width,texture,log_posterior`, one row per MAP table
 	 *  per pose (pose = 0-based index of the sweep; poses without tables have no row). */
+	/** `x0,y0,x1,y1,thickness,existence`, one row per wall (the format whisker-eval --walls
+	 *  reads; doc/formats.md). */
+	static void writeWalls(const std::string& path, const std::vector<model::LastingState::StoredWall>& walls);
 	static void writePerPose(const std::string& path, const std::vector<TPoseRecord>& poses);
 };
 }  // namespace whiskermap::maps

@@ -6,6 +6,8 @@
 #include <whiskermap/model/SlotVector.h>
 #include <whiskermap/model/SpatialHash.h>
 #include <whiskermap/model/SweptSpace.h>
+#include <whiskermap/model/Wall.h>
+#include <whiskermap/model/WallEvidence.h>
 #include <whiskermap/obs/Shapelet.h>
 
 #include <vector>
@@ -44,6 +46,8 @@ class Blackboard
 	void removeLeg(Id id);  ///< its shapelets lose their parent; its evidence goes with it
 	/** Links a leg to `table` (NONE: unlinks); the corner is the argmin of eq. 6. */
 	void setLegParent(Id leg, Id table);
+	/** Links shapelet to `leg` (NONE: unlinks it from its leg); a shapelet linked to a leg
+	 *  leaves its wall. */
 	void setShapeletParent(size_t shapelet, Id leg);
 	/** Moves table `id` to the pose (and size, texture) of `t`; its legs' corners are
 	 *  re-derived (argmin of eq. 6). */
@@ -76,6 +80,24 @@ class Blackboard
 	void addContextLeg(const Leg& l);
 	const std::vector<Table>& contextTables() const { return m_contextTables; }
 	const std::vector<Leg>& contextLegs() const { return m_contextLegs; }
+
+	/** Walls (doc/model.md, "Walls"): a shapelet's explicit parent is a leg or a wall, never
+	 *  both. A wall may carry folded evidence (the lasting map's). */
+	Id addWall(const Wall& w, const WallEvidence& evidence = {});
+	void removeWall(Id id);  ///< its shapelets lose their parent
+	void setWall(Id id, const Wall& w) { m_walls[id] = w; }
+	/** Links shapelet to `wall` (leaving its leg or other wall); NONE: unlinks it from its wall. */
+	void setShapeletWall(size_t shapelet, Id wall);
+	bool hasWall(Id id) const { return m_walls.alive(id); }
+	const Wall& wall(Id id) const { return m_walls[id]; }
+	const WallEvidence& wallEvidence(Id id) const { return m_wallEvidence[id]; }
+	const std::vector<Id>& shapeletsOfWall(Id id) const { return m_wallShapelets[id]; }
+	Id shapeletWall(size_t s) const { return m_shapeletWall[s]; }
+	/** True when shapelet s has an explicit cause (a leg or a wall). */
+	bool explained(size_t s) const { return m_shapeletParent[s] != NONE || m_shapeletWall[s] != NONE; }
+	bool wallExplains(Id w) const { return !m_wallShapelets[w].empty() || !m_wallEvidence[w].empty(); }
+	Id wallIdBound() const { return m_walls.capacity(); }
+	size_t wallCount() const { return m_walls.count(); }
 
 	/** Ids are below these bounds; test hasTable()/hasLeg(). */
 	Id tableIdBound() const { return m_tables.capacity(); }
@@ -146,5 +168,9 @@ class Blackboard
 	SpatialHash m_tableHash, m_legHash, m_contextTableHash, m_contextLegHash;
 	double m_maxLegRadius = 0;
 	SweptSpace m_swept;
+	SlotVector<Wall> m_walls;
+	std::vector<WallEvidence> m_wallEvidence;  ///< per wall id
+	std::vector<std::vector<Id>> m_wallShapelets;  ///< per wall id, ascending
+	std::vector<Id> m_shapeletWall;  ///< per shapelet: its wall, or NONE
 };
 }  // namespace whiskermap::model

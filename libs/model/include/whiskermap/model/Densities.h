@@ -3,6 +3,7 @@
 #include <whiskermap/model/ModelParams.h>
 #include <whiskermap/model/OrientedRect.h>
 #include <whiskermap/model/Table.h>
+#include <whiskermap/model/Wall.h>
 #include <whiskermap/obs/Shapelet.h>
 
 namespace whiskermap::model
@@ -56,6 +57,18 @@ double shaftVariance(const obs::Shapelet& s, double ux, double uy, const ModelPa
  *  the nearest face; near a corner it keeps a contact whose position noise crossed the
  *  corner's bisector on the face its normal names (doc/model.md). */
 double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelParams& p);
+
+/** log p(S | W) = log alpha_S - Delta_WS (eq. 22): the wall's long face that explains the
+ *  contact best; r^2 = across^2 + excess^2 (distance to the face segment) over sigma_r^2 as
+ *  eq. 7, the normal against the face's outward normal (mod 360 deg) as eq. 7, texture as
+ *  eq. 7. Under shaft noise the across term uses contactVariance (and its log-ratio gain). */
+double logShapeletGivenWall(const obs::Shapelet& s, const Wall& w, const ModelParams& p);
+/** The face (+1 or -1) of eq. 22's minimum for contact s. */
+int bestWallFace(const obs::Shapelet& s, const Wall& w, const ModelParams& p);
+
+/** Cell probability of a wall (eq. 23): (2 delta)^4 c_W exp(-length / lambda_W), a density over
+ *  (centre x, centre y, yaw, length) with an exponential length prior. */
+double logWallPrior(const Wall& w, const ModelParams& p);
 
 /** Null causes: a leg without a table (eq. 8), a shapelet without a leg (eq. 9). */
 double logLegNull(const ModelParams& p);

@@ -39,12 +39,21 @@ class LastingState
 		double board = 0;  ///< legs this close are on the board (partners, adoptees), dormant
 		double context = 0;  ///< tables and legs this close stand around as fixed context
 	};
+	/** A wall of the map (doc/model.md, "Walls"): its pose, the contacts it explained folded
+	 *  into constant-memory statistics (it keeps no explicit contacts), its existence. */
+	struct StoredWall
+	{
+		Wall wall;
+		WallEvidence evidence;
+		double existence = 0;
+	};
 	/** A local problem: the board and, per board id, the store id it came from (NONE: new). */
 	struct Region
 	{
 		explicit Region(const ModelParams& p) : board(p) {}
 		Blackboard board;
 		std::vector<Id> tables, legs, contacts;  ///< store ids of the board's tables, legs, shapelets
+		std::vector<size_t> walls;  ///< indices into walls() of the board's walls (board ids 0..)
 	};
 
 	explicit LastingState(const ModelParams& sizes = {});
@@ -62,10 +71,17 @@ class LastingState
 	 *  grown from r.board: its first r.tables.size() table ids and r.legs.size() leg ids are
 	 *  the region's, later ids new), relinks the region's contacts, and stores
 	 *  `existence[t]` for each live table t of `solved`. Returns the store ids of the new
-	 *  legs and tables in `newLegs` / `newTables` (board id -> store id, NONE if dead). */
+	 *  legs and tables in `newLegs` / `newTables` (board id -> store id, NONE if dead).
+	 *  The region's walls are replaced by the live walls of `solved` with `wallExistence[w]`;
+	 *  the contacts a wall explains are folded into its evidence at once (scored with `model`)
+	 *  and leave the store. */
 	void replace(
 		const Region& r, const Blackboard& solved, const std::vector<double>& existence, std::vector<Id>& newTables,
-		std::vector<Id>& newLegs);
+		std::vector<Id>& newLegs, const std::vector<double>& wallExistence = {}, const ModelParams& model = {});
+
+	const std::vector<StoredWall>& walls() const { return m_walls; }
+	/** Adds walls (deserialization, after restore()). */
+	void restoreWalls(const std::vector<StoredWall>& walls) { m_walls.insert(m_walls.end(), walls.begin(), walls.end()); }
 
 	/** Folds the oldest explicit contacts of leg `l` into its evidence (scored with `model`)
 	 *  until at most `keep` remain. */
@@ -130,5 +146,6 @@ class LastingState
 	uint32_t m_epoch = 0;
 	std::vector<uint32_t> m_tableMark, m_legMark, m_contactMark;
 	std::vector<Id> m_tableBoard, m_legBoard;  ///< store id -> board id, for the last extraction
+	std::vector<StoredWall> m_walls;  ///< few per map: scanned linearly
 };
 }  // namespace whiskermap::model

@@ -62,7 +62,13 @@ struct ModelParams
 	bool free_space = false;  ///< off: the paper's model
 	double free_space_p_miss = 0.05;  ///< chance a whisker sweeping through a leg misses it
 
-	/** Reads every key of `sec` (all required but the optional shaft-noise, free-space and
+	// Walls (issue 11, eqs. 22-23: doc/model.md, "Walls"); optional keys
+	bool walls = false;  ///< off: no wall hypotheses (the paper's model)
+	double c_W = 1e-7;  ///< wall prior density per (x, y, yaw, length) (eq. 23)
+	double wall_length_scale = 5.0;  ///< lambda_W of eq. 23's exponential length prior, metres
+	double wall_thickness = 0.1;  ///< thickness of every wall hypothesis (one class), metres
+
+	/** Reads every key of `sec` (all required but the optional shaft-noise, free-space, wall and
 	 *  objects keys; `objects` is read with ObjectCatalogue::load) and calls
 	 *  sec.finish(); throws core::Error. */
 	static ModelParams fromIni(core::IniSection& sec);

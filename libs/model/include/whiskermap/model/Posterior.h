@@ -29,11 +29,18 @@ double logLegLinkGain(const Blackboard& bb, Id leg, Id table);
 /** Same for shapelet `s` and `leg` (eq. 12 with eqs. 7, 9). 0 for leg == NONE. */
 double logShapeletLinkGain(const Blackboard& bb, size_t s, Id leg);
 
+/** log p(S | pa(S)) of shapelet s as the board links it (eq. 12): its leg (eq. 7), its wall
+ *  (eq. 22) or neither, or'ed with the null cause (eq. 9). */
+double logShapeletLinked(const Blackboard& bb, size_t s);
+
 /** Local log-odds of a present hypothesis given its Markov blanket (eq. 20):
  *  logJoint(B) - logJoint(B without H, H's children unlinked). Uses only H's parent,
  *  children, siblings and same-type neighbours (from the spatial hash). */
 double logOddsTable(const Blackboard& bb, Id table);
 double logOddsLeg(const Blackboard& bb, Id leg);
+/** The same for a wall: its cell (eq. 23), its shapelets (eq. 22 against the null cause), its
+ *  folded evidence and the legs standing in it (eq. 16). */
+double logOddsWall(const Blackboard& bb, Id wall);
 
 /** P^beta(H | mb(H)): the conditional of the annealed joint P^beta for a move with
  *  log-odds `logOdds` (eq. 20): 1 / (1 + exp(-beta * logOdds)). */

@@ -1,4 +1,5 @@
 #pragma once
+#include <whiskermap/world/Obstacle.h>
 #include <whiskermap/world/Table.h>
 
 #include <string>
@@ -26,5 +27,9 @@ struct OcTreeExport
 	/** Writes via a temporary file; returns the number of occupied voxels inserted.
 	 *  Throws core::Error if the file cannot be written or a table lies beyond range(). */
 	static size_t write(const std::vector<world::Table>& tables, const TOptions& o, const std::string& path);
+	/** The same plus walls: each a solid column over its footprint from the floor to `height`. */
+	static size_t write(
+		const std::vector<world::Table>& tables, const std::vector<world::Obstacle>& walls, const TOptions& o,
+		const std::string& path);
 };
 }  // namespace whiskermap::render

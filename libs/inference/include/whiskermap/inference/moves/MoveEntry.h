@@ -11,6 +11,7 @@ enum class Target : uint8_t
 	Shapelet,  ///< every shapelet without a leg (priming)
 	Table,
 	Leg,
+	Wall,  ///< every wall (doc/sampler.md, "Walls")
 };
 
 /** When a move is offered at a visited hypothesis, from the draw u ~ U(0, 1) per hypothesis

@@ -1,0 +1,40 @@
+#pragma once
+#include <whiskermap/model/OrientedRect.h>
+
+namespace whiskermap::model
+{
+/** A wall hypothesis W (issue 11; doc/model.md, "Walls"): a straight slab given by the end
+ *  points of its centre line, its thickness and its texture. Its two long faces lie
+ *  thickness/2 either side of the centre line; face +1 has the outward normal to the left of
+ *  the direction (x0, y0) -> (x1, y1), face -1 to the right. It explains contacts on its long
+ *  faces, within its extent (eq. 22); its end caps explain nothing. */
+struct Wall
+{
+	double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< centre-line end points, metres (world frame)
+	double thickness = 0;  ///< metres
+	double texture = 0;  ///< in [0, 1]
+
+	double length() const;
+	/** Same end points, thickness and texture within `eps` (the closed-form fits are
+	 *  deterministic to rounding, not to the bit). */
+	bool sameAs(const Wall& o, double eps = 1e-9) const;
+	/** The slab as a rectangle (overlap with legs, eq. 16). */
+	OrientedRect rect() const;
+
+	/** Where a point lies relative to one long face. */
+	struct FaceHit
+	{
+		int side;  ///< +1: the face to the left of the direction, -1: the right one
+		double across;  ///< signed distance from that face's line, positive outside the slab
+		double along;  ///< position along the centre line from (x0, y0), metres
+		double excess;  ///< distance past the extent along the line (0 within [0, length])
+		double normal;  ///< the face's outward normal angle, in (-pi, pi]
+	};
+	/** The point against face `side` (+1 or -1). */
+	FaceHit face(double x, double y, int side) const;
+	/** The point against the face on its side of the centre line (the nearer face). */
+	FaceHit nearestFace(double x, double y) const;
+	/** Exact distance from the point to the face segment of `side`: hypot(across, excess). */
+	double faceDistance(double x, double y, int side) const;
+};
+}  // namespace whiskermap::model

@@ -1,0 +1,116 @@
+// Walls in the lasting map (doc/map-plugin.md, "Walls"): a line of contacts along a wall
+// becomes one wall and no object; the walls survive serialization and a reloaded map continues
+// as the original.
+#include <gtest/gtest.h>
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/serialization/CArchive.h>
+#include <whiskermap/inference/SamplerParams.h>
+#include <whiskermap/maps/CHierarchicalObjectMap.h>
+#include <whiskermap/maps/LastingMap.h>
+#include <whiskermap/model/ObjectCatalogue.h>
+#include <whiskermap/obs/RawlogReader.h>
+
+#include <cmath>
+#include <random>
+
+using namespace whiskermap;
+
+namespace
+{
+const std::string SRC = WHISKERMAP_SOURCE_DIR;
+
+/** Inserts sweeps of 2-3 contacts on face +1 of the wall y in [-0.1, 0] from x = 0 to 3 m
+ *  (normals +90 deg, 3 mm and 3 deg of noise, wall texture), as a robot whisking along it. */
+maps::LastingMap wallRun(bool walls, uint64_t seed)
+{
+	model::ModelParams p;
+	p.classes = model::ObjectCatalogue::load(SRC + "/config/objects.ini");
+	p.walls = walls;
+	const inference::SamplerParams s;
+	maps::LastingMap m;
+	std::mt19937_64 rng(seed);
+	std::normal_distribution<double> n(0, 1);
+	for (int k = 0; k < 40; k++)
+	{
+		std::vector<obs::Shapelet> sweep;
+		const double x = 0.07 * k;
+		for (int i = 0; i < 2 + k % 2; i++)
+		{
+			obs::Shapelet c;
+			c.x = x + 0.12 * i + 0.003 * n(rng), c.y = 0.003 * n(rng);
+			c.normal = M_PI_2 + 0.05 * n(rng), c.texture = 0.3 + 0.02 * n(rng);
+			sweep.push_back(c);
+		}
+		m.insert(sweep, p, s, seed * 1000 + static_cast<uint64_t>(k));
+	}
+	return m;
+}
+
+size_t tablesAbove(const model::LastingState& s, double existence)
+{
+	size_t n = 0;
+	for (model::Id t = 0; t < s.tableIdBound(); t++) n += s.hasTable(t) && s.existence(t) >= existence;
+	return n;
+}
+
+std::shared_ptr<maps::CHierarchicalObjectMap> reloaded(const maps::CHierarchicalObjectMap& a)
+{
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << a;
+	buf.Seek(0);
+	return std::dynamic_pointer_cast<maps::CHierarchicalObjectMap>(arch.ReadObject());
+}
+}  // namespace
+
+TEST(WallMap, ALineOfContactsBecomesAWallAndNoChair)
+{
+	for (uint64_t seed = 1; seed <= 3; seed++)
+	{
+		const maps::LastingMap m = wallRun(true, seed);
+		const model::LastingState& s = m.state();
+		EXPECT_EQ(tablesAbove(s, 0.5), 0u) << seed;
+		size_t strong = 0;
+		double length = 0;
+		for (const auto& w : s.walls())
+			if (w.existence >= 0.5) strong++, length += w.wall.length();
+		EXPECT_GE(strong, 1u) << seed;
+		EXPECT_GT(length, 2.0) << seed;  // contacts span 0 .. 2.97 m; the first few stay on legs
+		for (const auto& w : s.walls())  // along the line y = -0.05 (the face at y = 0)
+		{
+			EXPECT_NEAR((w.wall.y0 + w.wall.y1) / 2, -0.05, 0.01) << seed;
+			EXPECT_GT(w.evidence.count(), 0u) << seed;
+		}
+	}
+	// Without walls the same contacts are held by legs (the model has nothing else).
+	const maps::LastingMap plain = wallRun(false, 1);
+	EXPECT_TRUE(plain.state().walls().empty());
+	EXPECT_GT(plain.state().legCount(), 3u);
+}
+
+TEST(WallMap, SerializationKeepsTheWallsAndContinues)
+{
+	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/office/default.rawlog");
+	maps::CHierarchicalObjectMap a;
+	a.modelParams.classes = model::ObjectCatalogue::load(SRC + "/config/objects.ini");
+	a.modelParams.walls = true;
+	const size_t half = std::min<size_t>(rawlog.sweeps.size() / 2, 600);
+	for (size_t i = 0; i < half; i++) a.insertObservation(*rawlog.sweeps[i].obs, mrpt::poses::CPose3D(rawlog.sweeps[i].robotPose));
+	ASSERT_FALSE(a.lastingMap().state().walls().empty());
+	const auto b = reloaded(a);
+	ASSERT_TRUE(b);
+	EXPECT_EQ(b->modelParams, a.modelParams);
+	const auto same = [](const maps::CHierarchicalObjectMap& x, const maps::CHierarchicalObjectMap& y) {
+		const auto &u = x.lastingMap().state().walls(), &v = y.lastingMap().state().walls();
+		if (u.size() != v.size()) return false;
+		for (size_t i = 0; i < u.size(); i++)
+			if (u[i].wall.x0 != v[i].wall.x0 || u[i].wall.y1 != v[i].wall.y1 || u[i].existence != v[i].existence ||
+				!(u[i].evidence == v[i].evidence))
+				return false;
+		return x.lastingMap().state().tableCount() == y.lastingMap().state().tableCount();
+	};
+	EXPECT_TRUE(same(a, *b));
+	for (size_t i = half; i < half + 60 && i < rawlog.sweeps.size(); i++)
+		for (auto* m : {&a, b.get()}) m->insertObservation(*rawlog.sweeps[i].obs, mrpt::poses::CPose3D(rawlog.sweeps[i].robotPose));
+	EXPECT_TRUE(same(a, *b));
+}

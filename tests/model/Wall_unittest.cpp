@@ -1,0 +1,162 @@
+// Walls (doc/model.md, "Walls"): the geometry of a wall's faces, eq. 22 and eq. 23 on
+// hand-computed values, and the folded evidence against the densities it sums.
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/core/IniSection.h>
+#include <whiskermap/model/Densities.h>
+#include <whiskermap/model/WallEvidence.h>
+
+#include <cmath>
+
+using namespace whiskermap::model;
+using whiskermap::obs::Shapelet;
+
+namespace
+{
+ModelParams handParams()
+{
+	ModelParams p;
+	p.sigma_r = 0.01;
+	p.sigma_theta = 0.1;
+	p.sigma_tau = 0.1;
+	p.alpha_S = std::exp(3.0);
+	p.delta = 0.05;
+	p.c_W = std::exp(-5.0);
+	p.wall_length_scale = 4;
+	p.wall_thickness = 0.1;
+	return p;
+}
+// Along +x from (0, 0) to (2, 0): face +1 is y = +0.05 (normal +90 deg), face -1 is y = -0.05.
+const Wall wall{0, 0, 2, 0, 0.1, 0.3};
+
+Shapelet contact(double x, double y, double normal, double texture)
+{
+	Shapelet s;
+	s.x = x, s.y = y, s.normal = normal, s.texture = texture;
+	return s;
+}
+}  // namespace
+
+TEST(Wall, FaceGeometry)
+{
+	EXPECT_DOUBLE_EQ(wall.length(), 2);
+	const Wall::FaceHit a = wall.nearestFace(1, 0.07);
+	EXPECT_EQ(a.side, 1);
+	EXPECT_NEAR(a.across, 0.02, 1e-12);
+	EXPECT_NEAR(a.along, 1, 1e-12);
+	EXPECT_EQ(a.excess, 0);
+	EXPECT_NEAR(a.normal, M_PI_2, 1e-12);
+	const Wall::FaceHit b = wall.nearestFace(1, -0.08);
+	EXPECT_EQ(b.side, -1);
+	EXPECT_NEAR(b.across, 0.03, 1e-12);
+	EXPECT_NEAR(b.normal, -M_PI_2, 1e-12);
+	// Inside the slab: negative across; past the ends: the excess along the line.
+	EXPECT_NEAR(wall.face(1, 0.01, 1).across, -0.04, 1e-12);
+	EXPECT_NEAR(wall.face(2.3, 0.05, 1).excess, 0.3, 1e-12);
+	EXPECT_NEAR(wall.face(-0.4, 0.05, 1).excess, 0.4, 1e-12);
+	EXPECT_NEAR(wall.faceDistance(2.3, 0.09, 1), std::hypot(0.3, 0.04), 1e-12);
+	// The same wall drawn the other way round swaps its faces.
+	const Wall back{2, 0, 0, 0, 0.1, 0.3};
+	EXPECT_EQ(back.nearestFace(1, 0.07).side, -1);
+	EXPECT_NEAR(back.nearestFace(1, 0.07).normal, M_PI_2, 1e-12);
+	const OrientedRect r = wall.rect();
+	EXPECT_NEAR(r.cx, 1, 1e-12);
+	EXPECT_NEAR(r.hx, 1, 1e-12);
+	EXPECT_NEAR(r.hy, 0.05, 1e-12);
+}
+
+TEST(Wall, ShapeletDensityByHand)
+{
+	const ModelParams p = handParams();
+	// 1 cm off face +1 (1 sigma_r), 0.05 rad off its normal (half sigma_theta), texture 0.1 off:
+	// log p = 3 - 1 - 0.25 - 1 (eq. 22).
+	EXPECT_NEAR(logShapeletGivenWall(contact(1, 0.06, M_PI_2 + 0.05, 0.4), wall, p), 0.75, 1e-9);
+	EXPECT_EQ(bestWallFace(contact(1, 0.06, M_PI_2 + 0.05, 0.4), wall, p), 1);
+	// On face +1's line but 2 cm past the end: the excess counts like a distance: 3 - 4.
+	EXPECT_NEAR(logShapeletGivenWall(contact(2.02, 0.05, M_PI_2, 0.3), wall, p), -1, 1e-9);
+	// On face -1, normal pointing out of it.
+	EXPECT_NEAR(logShapeletGivenWall(contact(0.5, -0.05, -M_PI_2, 0.3), wall, p), 3, 1e-9);
+	// On face +1 with a normal pointing into the wall: face -1 (10 cm away, the normal its own)
+	// explains it better than face +1 (a half turn off): 3 - 10^2.
+	EXPECT_NEAR(logShapeletGivenWall(contact(1, 0.05, -M_PI_2, 0.3), wall, p), -97, 1e-9);
+	EXPECT_EQ(bestWallFace(contact(1, 0.05, -M_PI_2, 0.3), wall, p), -1);
+}
+
+TEST(Wall, PriorByHand)
+{
+	const ModelParams p = handParams();
+	// (2 delta)^4 c_W exp(-length / lambda_W) = 0.1^4 e^-5 e^-0.5 (eq. 23).
+	EXPECT_NEAR(logWallPrior(wall, p), 4 * std::log(0.1) - 5.5, 1e-12);
+	const Wall longer{0, 0, 6, 0, 0.1, 0.3};
+	EXPECT_NEAR(logWallPrior(longer, p) - logWallPrior(wall, p), -1, 1e-12);
+}
+
+TEST(WallEvidence, SumsTheDensitiesAndFitsTheWall)
+{
+	const ModelParams p = handParams();
+	WallEvidence e;
+	double sum = 0;
+	std::vector<Shapelet> contacts;
+	for (int i = 0; i <= 8; i++)  // both faces, small errors
+	{
+		const int side = i % 3 == 0 ? -1 : 1;
+		contacts.push_back(contact(0.1 + 0.2 * i, side * (0.05 + 0.002 * (i % 4)), side * M_PI_2 + 0.01 * (i % 3), 0.3 + 0.01 * i));
+	}
+	for (const Shapelet& s : contacts) e.add(s, wall, p);
+	EXPECT_EQ(e.count(), contacts.size());
+	// At another pose (shifted, turned, another texture) the folded sum is eq. 22's sum, while
+	// every contact lies within the extent.
+	const Wall moved{-0.1, 0.01, 2.1, 0.03, 0.1, 0.35};
+	for (const Shapelet& s : contacts) sum += logShapeletGivenWall(s, moved, p);
+	EXPECT_NEAR(e.logLikelihood(moved, p), sum, 1e-6);
+	// The fit is the minimiser: better than the true wall, and from the first to the last contact.
+	const Wall fit = e.fit(0.1);
+	EXPECT_GE(e.logLikelihood(fit, p), e.logLikelihood(wall, p) - 1e-9);
+	EXPECT_NEAR(std::min(fit.x0, fit.x1), 0.1, 0.01);
+	EXPECT_NEAR(std::max(fit.x0, fit.x1), 1.7, 0.01);
+	EXPECT_NEAR((fit.y0 + fit.y1) / 2, 0.0, 0.005);
+	// Round trip of the statistics.
+	EXPECT_EQ(WallEvidence::fromStats(e.stats(), e.count()), e);
+}
+
+TEST(WallEvidence, FitRecoversATurnedWall)
+{
+	const ModelParams p = handParams();
+	const double a = 0.7, c = std::cos(a), s = std::sin(a);
+	const Wall truth{1, 1, 1 + 3 * c, 1 + 3 * s, 0.1, 0.3};
+	WallEvidence e;
+	for (int i = 0; i <= 10; i++)  // on face -1 (to the right of the direction), exact normals
+	{
+		const double t = 0.3 * i;
+		e.add(contact(1 + t * c + 0.05 * s, 1 + t * s - 0.05 * c, a - M_PI_2, 0.3), truth, p);
+	}
+	// The fit is the same slab, drawn from the first contact's face: its face +1 is the
+	// contacts' face, so its direction is the truth's reversed.
+	const Wall fit = e.fit(0.1);
+	EXPECT_NEAR(std::hypot(fit.x0 - truth.x1, fit.y0 - truth.y1), 0, 1e-6);
+	EXPECT_NEAR(std::hypot(fit.x1 - truth.x0, fit.y1 - truth.y0), 0, 1e-6);
+	EXPECT_NEAR(fit.nearestFace(1 + 0.05 * s, 1 - 0.05 * c).across, 0, 1e-6);
+}
+
+TEST(ModelParams, WallKeysAreStrict)
+{
+	const auto parse = [](const std::string& extra) {
+		mrpt::config::CConfigFileMemory cfg(
+			"[m]\nsigma_r=0.01\nsigma_theta=0.087\nsigma_w=0.01\nsigma_tau=0.1\nc_T=1e-2\nc_L=1e-3\nc_S=1e-4\n"
+			"alpha_L=7e3\nalpha_S=1e7\nepsilon=1e-2\ndelta=0.01\ntable_length=1\ntable_width=0.6\n"
+			"leg_width=0.05\ntexture=0.7\nparent_gate=0.05\n" + extra);
+		whiskermap::core::IniSection sec(cfg, "m", "test.ini");
+		return ModelParams::fromIni(sec);
+	};
+	EXPECT_FALSE(parse("").walls);
+	const ModelParams on = parse("walls=true\nc_W=1e-6\nwall_length_scale=3\nwall_thickness=0.12\n");
+	EXPECT_TRUE(on.walls);
+	EXPECT_DOUBLE_EQ(on.c_W, 1e-6);
+	EXPECT_DOUBLE_EQ(on.wall_length_scale, 3);
+	EXPECT_DOUBLE_EQ(on.wall_thickness, 0.12);
+	EXPECT_FALSE(on == parse(""));
+	EXPECT_THROW(parse("walls=yes please\n"), whiskermap::core::Error);
+	EXPECT_THROW(parse("c_W=0\n"), whiskermap::core::Error);
+	EXPECT_THROW(parse("wall_thickness=-1\n"), whiskermap::core::Error);
+}
