@@ -57,7 +57,7 @@ std::unique_ptr<mrpt::maps::CMultiMetricMap> builtMap(const std::string& name, b
 	auto mm = newMap();
 	auto* m = mm->mapByClass<maps::CHierarchicalObjectMap>().get();
 	m->insertionOptions.keep_history = false;
-	m->likelihoodOptions.sweep.free_space = freeSpace;
+	m->likelihoodOptions.sweep.use_swept_grid = freeSpace;
 	for (const auto& s : dataset(name).sweeps) mm->insertObservation(*s.obs, mrpt::poses::CPose3D(s.robotPose));
 	return mm;
 }

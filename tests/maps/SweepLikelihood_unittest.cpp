@@ -60,6 +60,13 @@ TEST_F(OneTable, UntouchedWhiskersWhereTheMapPredictsContactArePenalised)
 
 namespace
 {
+maps::SweepLikelihood::TOptions withGrid()
+{
+	maps::SweepLikelihood::TOptions o;
+	o.use_swept_grid = true;
+	return o;
+}
+
 /** The grid a mapping run leaves: sweeps of `world` at the poses of a 0.3 m lattice over
  *  [x0, x1] x [y0, y1], four headings each. */
 whiskermap::model::SweptGrid sweptOver(
@@ -87,13 +94,12 @@ TEST_F(OneTable, WithoutAGridOrWithItsFreeSpaceOffTheLikelihoodIsUnchanged)
 	const mrpt::poses::CPose2D truth(5.0, 5.0, 0.3);
 	const auto o = sim.sense(truth, mrpt::Clock::fromDouble(1e9));
 	const auto grid = sweptOver(w, robot, 4, 6, 4, 6);
-	maps::SweepLikelihood::TOptions off;
-	off.free_space = false;
+	const maps::SweepLikelihood::TOptions off;  // the default: no grid
 	const whiskermap::model::SweptGrid empty;
 	for (const auto& p : {truth, mrpt::poses::CPose2D(5.1, 4.9, 0.5), mrpt::poses::CPose2D(1, 1, 0)})
 	{
 		EXPECT_EQ(maps::SweepLikelihood::logLikelihood(*o, p, legs, off, &grid), ll(*o, p));
-		EXPECT_EQ(maps::SweepLikelihood::logLikelihood(*o, p, legs, {}, &empty), ll(*o, p));
+		EXPECT_EQ(maps::SweepLikelihood::logLikelihood(*o, p, legs, withGrid(), &empty), ll(*o, p));
 	}
 }
 
@@ -107,7 +113,7 @@ TEST_F(OneTable, ContactsInSweptFreeSpaceAreUnlikely)
 	const auto o = sim.sense(truth, mrpt::Clock::fromDouble(1e9));
 	ASSERT_GE(o->contactCount(), 4u);
 	const auto grid = sweptOver(w, robot, 3.5, 6.5, 3.5, 6.5);
-	const maps::SweepLikelihood::TOptions opts;
+	const auto opts = withGrid();
 	const double atTruth = maps::SweepLikelihood::logLikelihood(*o, truth, {}, opts, &grid);
 	for (double dx : {-0.3, -0.2, 0.2, 0.3})
 		for (double dth : {-0.3, 0.0, 0.3})
@@ -137,7 +143,7 @@ TEST_F(OneTable, PosesWhereTheMapNeverExploredArePenalised)
 	const auto o = sim.sense(inside, mrpt::Clock::fromDouble(1e9));
 	ASSERT_EQ(o->contactCount(), 0u);
 	const auto grid = sweptOver(empty, robot, 1, 3, 1, 3);
-	const maps::SweepLikelihood::TOptions opts;
+	const auto opts = withGrid();
 	EXPECT_EQ(ll(*o, inside), ll(*o, outside));
 	const double in = maps::SweepLikelihood::logLikelihood(*o, inside, {}, opts, &grid);
 	const double out = maps::SweepLikelihood::logLikelihood(*o, outside, {}, opts, &grid);

@@ -79,6 +79,7 @@ TEST(SweptGridMap, BothModesKeepItBoundedByTheArea)
 TEST(SweptGridMap, CopiesShareTheGridAndStreamsKeepIt)
 {
 	CHierarchicalObjectMap a;
+	a.likelihoodOptions.sweep.use_swept_grid = true;
 	insert(a, 0, 150);
 	CHierarchicalObjectMap b = a;  // as resampling copies
 	EXPECT_EQ(b.sweptGrid().sharedChunks(), b.sweptGrid().chunkCount());
@@ -96,14 +97,16 @@ TEST(SweptGridMap, CopiesShareTheGridAndStreamsKeepIt)
 		EXPECT_EQ(ca[k].cell.passes, cb[k].cell.passes);
 		EXPECT_EQ(ca[k].cell.touches, cb[k].cell.touches);
 	}
+	EXPECT_TRUE(back->likelihoodOptions.sweep.use_swept_grid);
 	EXPECT_EQ(score(*back, 100, 0.2), score(a, 100, 0.2));
 }
 
-// A version 3 stream (the same bytes without version 4's tail) loads with an empty grid and
-// scores as the likelihood without free space.
+// A version 3 stream (the same bytes without version 4's tail, whose use_swept_grid is then
+// the default, off) loads with an empty grid and scores as the likelihood without it.
 TEST(SweptGridMap, VersionThreeStreamsLoadWithoutTheGrid)
 {
 	CHierarchicalObjectMap a;
+	a.likelihoodOptions.sweep.use_swept_grid = true;
 	insert(a, 0, 150);
 	auto bytes = bytesOf(a);
 	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
@@ -120,7 +123,7 @@ TEST(SweptGridMap, VersionThreeStreamsLoadWithoutTheGrid)
 	EXPECT_TRUE(old->sweptGrid().empty());
 	EXPECT_EQ(old->mapObjects().size(), a.mapObjects().size());
 	CHierarchicalObjectMap legacy = a;
-	legacy.likelihoodOptions.sweep.free_space = false;
+	legacy.likelihoodOptions.sweep.use_swept_grid = false;
 	for (const double dx : {0.0, 0.3})
 	{
 		EXPECT_EQ(score(*old, 120, dx), score(legacy, 120, dx));
@@ -137,17 +140,17 @@ TEST(SweptGridMap, OptionsAreReadStrictly)
 							<< "[MetricMap_hierarchicalObjectMap_00_insertOpts]\n" << insert;
 		return maps::MapConfig::load(path);
 	};
-	const auto good = load("free_space=false\ncell_prior=0.2\ncell_prior_sweeps=3\np_unexplored=0.01\n", "swept_cell=0.2\n");
+	const auto good = load("use_swept_grid=true\ncell_prior=0.2\ncell_prior_sweeps=3\np_unexplored=0.01\n", "swept_cell=0.2\n");
 	const auto m = mrpt::maps::CMultiMetricMap(good).mapByClass<CHierarchicalObjectMap>();
 	ASSERT_TRUE(m);
-	EXPECT_FALSE(m->likelihoodOptions.sweep.free_space);
+	EXPECT_TRUE(m->likelihoodOptions.sweep.use_swept_grid);
 	EXPECT_EQ(m->likelihoodOptions.sweep.cell_prior, 0.2);
 	EXPECT_EQ(m->likelihoodOptions.sweep.cell_prior_sweeps, 3);
 	EXPECT_EQ(m->likelihoodOptions.sweep.p_unexplored, 0.01);
 	EXPECT_EQ(m->insertionOptions.swept_cell, 0.2);
 	EXPECT_THROW(load("cell_prior=1\n", ""), core::Error);
 	EXPECT_THROW(load("p_unexplored=0\n", ""), core::Error);
-	EXPECT_THROW(load("free_space=maybe\n", ""), core::Error);
+	EXPECT_THROW(load("use_swept_grid=maybe\n", ""), core::Error);
 	EXPECT_THROW(load("", "swept_cell=0\n"), core::Error);
 	std::filesystem::remove(path);
 }

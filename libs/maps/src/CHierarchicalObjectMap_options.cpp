@@ -89,7 +89,7 @@ void CHierarchicalObjectMap::TLikelihoodOptions::loadFromConfigFile(
 		sweep.sigma_normal = core::deg2rad(sec.number("sigma_normal_deg", core::rad2deg(sweep.sigma_normal), 0.01, 180));
 		sweep.p_unexplained = sec.number("p_unexplained", sweep.p_unexplained, 1e-9, 1);
 		sweep.p_miss = sec.number("p_miss", sweep.p_miss, 1e-9, 1);
-		sweep.free_space = sec.boolean("free_space", sweep.free_space);
+		sweep.use_swept_grid = sec.boolean("use_swept_grid", sweep.use_swept_grid);
 		sweep.cell_prior = sec.number("cell_prior", sweep.cell_prior, 1e-6, 0.999);
 		sweep.cell_prior_sweeps = sec.number("cell_prior_sweeps", sweep.cell_prior_sweeps, 1e-6, 1e6);
 		sweep.p_unexplored = sec.number("p_unexplored", sweep.p_unexplored, 1e-12, 1);
@@ -102,7 +102,7 @@ void CHierarchicalObjectMap::TLikelihoodOptions::dumpToTextStream(std::ostream& 
 {
 	out << "sigma_contact=" << sweep.sigma_contact << "\nsigma_normal_deg=" << core::rad2deg(sweep.sigma_normal)
 		<< "\np_unexplained=" << sweep.p_unexplained << "\np_miss=" << sweep.p_miss
-		<< "\nfree_space=" << sweep.free_space << "\ncell_prior=" << sweep.cell_prior
+		<< "\nuse_swept_grid=" << sweep.use_swept_grid << "\ncell_prior=" << sweep.cell_prior
 		<< "\ncell_prior_sweeps=" << sweep.cell_prior_sweeps << "\np_unexplored=" << sweep.p_unexplored
 		<< "\nmin_existence=" << min_existence << "\nmin_support=" << min_support << "\n";
 }

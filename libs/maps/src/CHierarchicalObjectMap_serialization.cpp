@@ -231,7 +231,7 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	writeClasses(out, m, m_lasting.state());
 	// Version 4: the swept grid and the likelihood's free-space options.
 	const auto& sw = likelihoodOptions.sweep;
-	out << insertionOptions.swept_cell << sw.free_space << sw.cell_prior << sw.cell_prior_sweeps << sw.p_unexplored;
+	out << insertionOptions.swept_cell << sw.use_swept_grid << sw.cell_prior << sw.cell_prior_sweeps << sw.p_unexplored;
 	writeSwept(out, m_sweptGrid);
 }
 
@@ -304,7 +304,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 			if (version >= 4)
 			{
 				auto& sw = likelihoodOptions.sweep;
-				in >> insertionOptions.swept_cell >> sw.free_space >> sw.cell_prior >> sw.cell_prior_sweeps >> sw.p_unexplored;
+				in >> insertionOptions.swept_cell >> sw.use_swept_grid >> sw.cell_prior >> sw.cell_prior_sweeps >> sw.p_unexplored;
 				readSwept(in, m_sweptGrid);  // older streams: empty (internal_clear above)
 			}
 			m_consolidator.setObjects(std::move(objs));
