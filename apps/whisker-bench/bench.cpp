@@ -51,12 +51,23 @@ void BM_InsertSweep(benchmark::State& state, const std::string& name)
 	state.SetItemsProcessed(state.iterations());
 }
 
-/** One sweep scored against the map built from the whole dataset (a particle's weight). */
-void BM_SweepLikelihood(benchmark::State& state, const std::string& name)
+/** The map built from the whole dataset (keeping no history, as a particle's map). */
+std::unique_ptr<mrpt::maps::CMultiMetricMap> builtMap(const std::string& name, bool freeSpace)
+{
+	auto mm = newMap();
+	auto* m = mm->mapByClass<maps::CHierarchicalObjectMap>().get();
+	m->insertionOptions.keep_history = false;
+	m->likelihoodOptions.sweep.use_swept_grid = freeSpace;
+	for (const auto& s : dataset(name).sweeps) mm->insertObservation(*s.obs, mrpt::poses::CPose3D(s.robotPose));
+	return mm;
+}
+
+/** One sweep scored against the map built from the whole dataset (a particle's weight);
+ *  `freeSpace`: with the swept grid's eqs. L1-L5. */
+void BM_SweepLikelihood(benchmark::State& state, const std::string& name, bool freeSpace)
 {
 	const auto& sweeps = dataset(name).sweeps;
-	auto mm = newMap();
-	for (const auto& s : sweeps) mm->insertObservation(*s.obs, mrpt::poses::CPose3D(s.robotPose));
+	auto mm = builtMap(name, freeSpace);
 	size_t i = 0;
 	double sink = 0;
 	for (auto _ : state)
@@ -67,11 +78,38 @@ void BM_SweepLikelihood(benchmark::State& state, const std::string& name)
 	benchmark::DoNotOptimize(sink);
 	state.SetItemsProcessed(state.iterations());
 }
+
+/** A copy of the map built from the whole dataset, as resampling makes; `gridOnly`: its
+ *  swept grid alone (shared chunks). */
+void BM_MapCopy(benchmark::State& state, bool gridOnly)
+{
+	auto mm = builtMap("default", true);
+	const auto& m = *mm->mapByClass<maps::CHierarchicalObjectMap>();
+	for (auto _ : state)
+	{
+		if (gridOnly)
+		{
+			model::SweptGrid copy = m.sweptGrid();
+			benchmark::DoNotOptimize(copy);
+		}
+		else
+		{
+			maps::CHierarchicalObjectMap copy = m;
+			benchmark::DoNotOptimize(copy);
+		}
+	}
+	state.SetItemsProcessed(state.iterations());
+	state.counters["grid_chunks"] = static_cast<double>(m.sweptGrid().chunkCount());
+	state.counters["grid_cells"] = static_cast<double>(m.sweptGrid().cells().size());
+}
 }  // namespace
 
 BENCHMARK_CAPTURE(BM_InsertSweep, noiseless, std::string("noiseless"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_InsertSweep, default, std::string("default"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_InsertSweep, very_noisy, std::string("very-noisy"))->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_SweepLikelihood, default, std::string("default"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SweepLikelihood, default, std::string("default"), true)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SweepLikelihood, default_no_free_space, std::string("default"), false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_MapCopy, whole_map, false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_MapCopy, swept_grid_only, true)->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

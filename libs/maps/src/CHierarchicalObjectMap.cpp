@@ -163,6 +163,7 @@ void CHierarchicalObjectMap::internal_clear()
 	m_consolidator.clear();
 	m_lasting.clear();
 	m_lastLasting = {};
+	m_sweptGrid.clear(insertionOptions.swept_cell);
 	m_shapelets.clear();
 	m_memory = inference::ShapeletMemory(insertionOptions.memory_size);
 	m_sweptMemory = inference::SweptMemory(insertionOptions.memory_size);
@@ -181,6 +182,7 @@ bool CHierarchicalObjectMap::internal_insertObservation(
 	const auto* sweep = dynamic_cast<const obs::CObservationWhiskerContacts*>(&o);
 	if (!sweep) return false;
 	const mrpt::poses::CPose2D pose = robotPose ? mrpt::poses::CPose2D(*robotPose) : mrpt::poses::CPose2D();
+	recordSwept(*sweep, pose);
 	if (lasting())
 	{
 		insertLasting(*sweep, pose);
@@ -190,6 +192,15 @@ bool CHierarchicalObjectMap::internal_insertObservation(
 	auto result = m_solver.solve(in, samplerParams, m_snapshotTemperature);
 	integrateStep(std::move(in), std::move(result));
 	return true;
+}
+
+void CHierarchicalObjectMap::recordSwept(const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose)
+{
+	if (m_sweptGrid.empty() && m_sweptGrid.cellSize() != insertionOptions.swept_cell)
+		m_sweptGrid.clear(insertionOptions.swept_cell);
+	std::vector<std::array<double, 2>> contacts;
+	for (const auto& s : sweep.toShapelets(pose)) contacts.push_back({s.x, s.y});
+	m_sweptGrid.addSweep(pose.x(), pose.y(), sweep.toSweptSectors(pose), contacts);
 }
 
 void CHierarchicalObjectMap::insertLasting(const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose)
@@ -287,7 +298,7 @@ double CHierarchicalObjectMap::internal_computeObservationLikelihood(
 	const auto* sweep = dynamic_cast<const obs::CObservationWhiskerContacts*>(&o);
 	if (!sweep) return 0;
 	return SweepLikelihood::logLikelihood(
-		*sweep, mrpt::poses::CPose2D(takenFrom), mappedLegs(), likelihoodOptions.sweep);
+		*sweep, mrpt::poses::CPose2D(takenFrom), mappedLegs(), likelihoodOptions.sweep, &m_sweptGrid);
 }
 
 // ---------------------------------------------------------------- files, text, 3-D

@@ -59,6 +59,7 @@ void CHierarchicalObjectMap::TInsertionOptions::loadFromConfigFile(
 		seed = static_cast<uint64_t>(sec.integer("seed", static_cast<long>(seed), 0, 1L << 53));
 		use_sensor_noise = sec.boolean("use_sensor_noise", use_sensor_noise);
 		keep_history = sec.boolean("keep_history", keep_history);
+		swept_cell = sec.number("swept_cell", swept_cell, 0.005, 10);
 		auto& m2 = consolidation;
 		m2.merge_distance = sec.number("merge_distance", m2.merge_distance, 0, 100);
 		m2.merge_angle = core::deg2rad(sec.number("merge_angle_deg", core::rad2deg(m2.merge_angle), 0, 90));
@@ -75,7 +76,7 @@ void CHierarchicalObjectMap::TInsertionOptions::dumpToTextStream(std::ostream& o
 		<< "\nlocal_sweeps_per_temperature=" << lasting.schedule.sweeps_per_temperature
 		<< "\nlocal_coldest_sweeps=" << lasting.schedule.coldest_sweeps
 		<< "\nlocal_polish_sweeps=" << lasting.schedule.polish_sweeps << "\nmemory_size=" << memory_size << "\nseed=" << seed << "\nuse_sensor_noise=" << use_sensor_noise
-		<< "\nkeep_history=" << keep_history << "\nmerge_distance=" << consolidation.merge_distance
+		<< "\nkeep_history=" << keep_history << "\nswept_cell=" << swept_cell << "\nmerge_distance=" << consolidation.merge_distance
 		<< "\nmerge_angle_deg=" << core::rad2deg(consolidation.merge_angle)
 		<< "\nevidence_margin=" << consolidation.evidence_margin << "\n";
 }
@@ -88,6 +89,10 @@ void CHierarchicalObjectMap::TLikelihoodOptions::loadFromConfigFile(
 		sweep.sigma_normal = core::deg2rad(sec.number("sigma_normal_deg", core::rad2deg(sweep.sigma_normal), 0.01, 180));
 		sweep.p_unexplained = sec.number("p_unexplained", sweep.p_unexplained, 1e-9, 1);
 		sweep.p_miss = sec.number("p_miss", sweep.p_miss, 1e-9, 1);
+		sweep.use_swept_grid = sec.boolean("use_swept_grid", sweep.use_swept_grid);
+		sweep.cell_prior = sec.number("cell_prior", sweep.cell_prior, 1e-6, 0.999);
+		sweep.cell_prior_sweeps = sec.number("cell_prior_sweeps", sweep.cell_prior_sweeps, 1e-6, 1e6);
+		sweep.p_unexplored = sec.number("p_unexplored", sweep.p_unexplored, 1e-12, 1);
 		min_existence = sec.number("min_existence", min_existence, 0, 1);
 		min_support = static_cast<uint32_t>(sec.integer("min_support", min_support, 0, 1000000));
 	});
@@ -97,6 +102,8 @@ void CHierarchicalObjectMap::TLikelihoodOptions::dumpToTextStream(std::ostream& 
 {
 	out << "sigma_contact=" << sweep.sigma_contact << "\nsigma_normal_deg=" << core::rad2deg(sweep.sigma_normal)
 		<< "\np_unexplained=" << sweep.p_unexplained << "\np_miss=" << sweep.p_miss
+		<< "\nuse_swept_grid=" << sweep.use_swept_grid << "\ncell_prior=" << sweep.cell_prior
+		<< "\ncell_prior_sweeps=" << sweep.cell_prior_sweeps << "\np_unexplored=" << sweep.p_unexplored
 		<< "\nmin_existence=" << min_existence << "\nmin_support=" << min_support << "\n";
 }
 

@@ -1,10 +1,13 @@
 // CHierarchicalObjectMap: versioned MRPT serialization (doc/map-plugin.md). Version 0 (no
 // lasting map) still loads, as a per-pose map; version 1 (no shaft directions) as contacts
 // without a known shaft; versions before 3 with the lasting tables reported at their own poses;
-// versions before 4 without walls (walls = false).
+// versions before 4 without walls (walls = false); versions before 5 with an empty swept grid
+// (the likelihood then knows no free space).
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/model/ObjectCatalogue.h>
+
+#include <cstdlib>
 
 using mrpt::serialization::CArchive;
 
@@ -182,9 +185,34 @@ void readClasses(CArchive& in, model::ModelParams& m, LastingParts& parts)
 			THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (table class out of range)");
 	}
 }
+/** Version 4: the swept grid, its explored cells only. */
+void writeSwept(CArchive& out, const model::SweptGrid& g)
+{
+	out << g.cellSize();
+	const auto cells = g.cells();
+	out.WriteAs<uint32_t>(static_cast<uint32_t>(cells.size()));
+	for (const auto& c : cells) out << c.ix << c.iy << c.cell.passes << c.cell.touches;
+}
+
+void readSwept(CArchive& in, model::SweptGrid& g)
+{
+	double cell;
+	in >> cell;
+	if (!(cell > 0)) THROW_EXCEPTION("CHierarchicalObjectMap: corrupt swept grid (cell size <= 0)");
+	g.clear(cell);
+	const uint32_t n = in.ReadAs<uint32_t>();
+	for (uint32_t k = 0; k < n; k++)
+	{
+		model::SweptGrid::IndexedCell c;
+		in >> c.ix >> c.iy >> c.cell.passes >> c.cell.touches;
+		if (std::abs(static_cast<int64_t>(c.ix)) > (1 << 24) || std::abs(static_cast<int64_t>(c.iy)) > (1 << 24))
+			THROW_EXCEPTION("CHierarchicalObjectMap: corrupt swept grid (cell index out of range)");
+		g.set(c.ix, c.iy, c.cell);
+	}
+}
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 4; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 5; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -232,6 +260,10 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	writeClasses(out, m, m_lasting.state());
 	// Version 4: walls.
 	writeWalls(out, m, m_lasting.state());
+	// Version 5: the swept grid and the likelihood's free-space options.
+	const auto& sw = likelihoodOptions.sweep;
+	out << insertionOptions.swept_cell << sw.use_swept_grid << sw.cell_prior << sw.cell_prior_sweeps << sw.p_unexplored;
+	writeSwept(out, m_sweptGrid);
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -307,6 +339,12 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 					lasting.tables, lasting.existence, lasting.reported, lasting.legs, lasting.evidence, lasting.contacts,
 					lasting.seq, m);
 				m_lasting.state().restoreWalls(walls);
+			}
+			if (version >= 5)
+			{
+				auto& sw = likelihoodOptions.sweep;
+				in >> insertionOptions.swept_cell >> sw.use_swept_grid >> sw.cell_prior >> sw.cell_prior_sweeps >> sw.p_unexplored;
+				readSwept(in, m_sweptGrid);  // older streams: empty (internal_clear above)
 			}
 			m_consolidator.setObjects(std::move(objs));
 			m_consolidator.setOptions(c);

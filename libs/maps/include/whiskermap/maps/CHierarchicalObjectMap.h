@@ -34,7 +34,7 @@ namespace whiskermap::maps
  *    into a consolidated map by votes (TableConsolidator).
  *
  *  computeObservationLikelihood(sweep, pose) casts each whisker against the map's legs
- *  (SweepLikelihood). Options and their .ini sections: doc/map-plugin.md, config/whisker-map.ini. */
+ *  and weighs it by where the map explored (SweepLikelihood, SweptGrid). Options and their .ini sections: doc/map-plugin.md, config/whisker-map.ini. */
 class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 {
 	DEFINE_SERIALIZABLE(CHierarchicalObjectMap, whiskermap::maps)
@@ -60,6 +60,9 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 		 *  stays bounded by the map, whatever the trajectory's length: a streaming consumer
 		 *  reads lastRecord() and lastInput() after each insertion instead. */
 		bool keep_history = true;
+		/** Edge (metres) of the swept grid's cells: where the map explored, its free space and
+		 *  where it was touched (model::SweptGrid; the sweep likelihood's eqs. L1-L5). */
+		double swept_cell = 0.1;
 		TableConsolidator::TOptions consolidation;
 		void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
 		void dumpToTextStream(std::ostream& out) const override;
@@ -112,6 +115,9 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	const LastingMap& lastingMap() const { return m_lasting; }
 	/** What the last lasting insertion did. */
 	const LastingMap::TStats& lastLastingStats() const { return m_lastLasting; }
+	/** Where the map explored: per coarse cell, the sweeps that crossed it free or touched in
+	 *  it (both modes; shared between copies, copy-on-write). */
+	const model::SweptGrid& sweptGrid() const { return m_sweptGrid; }
 
 	/** Per-pose mode: per inserted sweep, in order (empty unless insertionOptions.keep_history). */
 	const std::vector<TPoseRecord>& poseRecords() const { return m_poses; }
@@ -170,6 +176,7 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	TableConsolidator m_consolidator;
 	LastingMap m_lasting;
 	LastingMap::TStats m_lastLasting;
+	model::SweptGrid m_sweptGrid;
 	std::vector<obs::Shapelet> m_shapelets;
 	inference::ShapeletMemory m_memory;
 	/** The working memory's swept free space (model free_space on; not serialized: a reloaded
@@ -206,6 +213,8 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	mutable LegCache m_legCache;
 	/** The model a sweep with this noise is scored with. */
 	model::ModelParams modelFor(const obs::TSensorNoise& noise) const;
+	/** The sweep's free space and contacts into the swept grid. */
+	void recordSwept(const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose);
 	/** Lasting mode: one insertion. */
 	void insertLasting(const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose);
 	/** A consolidated object (per-pose mode) or a lasting table, as written out. */

@@ -1,0 +1,156 @@
+// The map's swept grid (issue 9): kept by both modes, bounded by the area explored, shared
+// by copies, serialized (stream version 5; version 4 streams load without it), read strictly
+// from the .ini, and used by the sweep likelihood (doc/map-plugin.md, eqs. L1-L5).
+#include <gtest/gtest.h>
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/maps/CMultiMetricMap.h>
+#include <mrpt/serialization/CArchive.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/maps/CHierarchicalObjectMap.h>
+#include <whiskermap/maps/MapConfig.h>
+#include <whiskermap/obs/RawlogReader.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+using namespace whiskermap;
+using maps::CHierarchicalObjectMap;
+
+namespace
+{
+const std::string SRC = WHISKERMAP_SOURCE_DIR;
+
+const obs::RawlogReader::Contents& arena()
+{
+	static const auto r = obs::RawlogReader::read(SRC + "/datasets/paper_arena/default.rawlog");
+	return r;
+}
+
+void insert(CHierarchicalObjectMap& m, size_t from, size_t to)
+{
+	for (size_t i = from; i < to && i < arena().sweeps.size(); i++)
+		m.insertObservation(*arena().sweeps[i].obs, mrpt::poses::CPose3D(arena().sweeps[i].robotPose));
+}
+
+std::vector<uint8_t> bytesOf(const CHierarchicalObjectMap& m)
+{
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << m;
+	const auto* p = static_cast<const uint8_t*>(buf.getRawBufferData());
+	return {p, p + buf.getTotalBytesCount()};
+}
+
+std::shared_ptr<CHierarchicalObjectMap> read(const std::vector<uint8_t>& bytes)
+{
+	mrpt::io::CMemoryStream buf;
+	buf.assignMemoryNotOwn(bytes.data(), bytes.size());
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	return std::dynamic_pointer_cast<CHierarchicalObjectMap>(arch.ReadObject());
+}
+
+double score(const CHierarchicalObjectMap& m, size_t sweep, double dx = 0)
+{
+	const auto& s = arena().sweeps[sweep];
+	return m.computeObservationLikelihood(*s.obs, mrpt::poses::CPose3D(s.robotPose + mrpt::poses::CPose2D(dx, 0, 0)));
+}
+}  // namespace
+
+TEST(SweptGridMap, BothModesKeepItBoundedByTheArea)
+{
+	for (const auto mode : {CHierarchicalObjectMap::TInsertionOptions::TMode::Lasting,
+							CHierarchicalObjectMap::TInsertionOptions::TMode::PerPose})
+	{
+		CHierarchicalObjectMap m;
+		m.insertionOptions.mode = mode;
+		m.insertionOptions.keep_history = false;
+		insert(m, 0, 200);
+		const size_t cells = m.sweptGrid().cells().size();
+		EXPECT_GT(cells, 400u);  // 0.1 m cells of a 4 m x 4 m arena: at most about 2000
+		EXPECT_LT(cells, 2500u);
+		insert(m, 0, 200);  // the same sweeps again: no new cell, counts doubled
+		EXPECT_EQ(m.sweptGrid().cells().size(), cells);
+		m.clear();
+		EXPECT_TRUE(m.sweptGrid().empty());
+	}
+}
+
+TEST(SweptGridMap, CopiesShareTheGridAndStreamsKeepIt)
+{
+	CHierarchicalObjectMap a;
+	a.likelihoodOptions.sweep.use_swept_grid = true;
+	insert(a, 0, 150);
+	CHierarchicalObjectMap b = a;  // as resampling copies
+	EXPECT_EQ(b.sweptGrid().sharedChunks(), b.sweptGrid().chunkCount());
+	insert(b, 150, 151);
+	EXPECT_LT(b.sweptGrid().sharedChunks(), b.sweptGrid().chunkCount());
+	EXPECT_FALSE(a.sweptGrid().empty());
+	const auto back = read(bytesOf(a));
+	ASSERT_TRUE(back);
+	const auto ca = a.sweptGrid().cells(), cb = back->sweptGrid().cells();
+	ASSERT_EQ(ca.size(), cb.size());
+	for (size_t k = 0; k < ca.size(); k++)
+	{
+		EXPECT_EQ(ca[k].ix, cb[k].ix);
+		EXPECT_EQ(ca[k].iy, cb[k].iy);
+		EXPECT_EQ(ca[k].cell.passes, cb[k].cell.passes);
+		EXPECT_EQ(ca[k].cell.touches, cb[k].cell.touches);
+	}
+	EXPECT_TRUE(back->likelihoodOptions.sweep.use_swept_grid);
+	EXPECT_EQ(score(*back, 100, 0.2), score(a, 100, 0.2));
+}
+
+// A version 4 stream (the same bytes without version 5's tail, whose use_swept_grid is then
+// the default, off) loads with an empty grid and scores as the likelihood without it.
+TEST(SweptGridMap, VersionFourStreamsLoadWithoutTheGrid)
+{
+	CHierarchicalObjectMap a;
+	a.likelihoodOptions.sweep.use_swept_grid = true;
+	insert(a, 0, 150);
+	auto bytes = bytesOf(a);
+	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
+	ASSERT_EQ(bytes[0], static_cast<uint8_t>(name.size() | 0x80));
+	ASSERT_EQ(std::string(bytes.begin() + 1, bytes.begin() + 1 + static_cast<long>(name.size())), name);
+	ASSERT_EQ(bytes[1 + name.size()], 5);
+	bytes[1 + name.size()] = 4;
+	// version 5's tail: swept_cell, free_space, cell_prior, cell_prior_sweeps, p_unexplored,
+	// the grid's cell edge and count, 12 bytes a cell; then MRPT's end flag
+	const size_t tail = 8 + 1 + 8 + 8 + 8 + 8 + 4 + 12 * a.sweptGrid().cells().size();
+	bytes.erase(bytes.end() - 1 - static_cast<long>(tail), bytes.end() - 1);
+	const auto old = read(bytes);
+	ASSERT_TRUE(old);
+	EXPECT_TRUE(old->sweptGrid().empty());
+	EXPECT_EQ(old->mapObjects().size(), a.mapObjects().size());
+	CHierarchicalObjectMap legacy = a;
+	legacy.likelihoodOptions.sweep.use_swept_grid = false;
+	for (const double dx : {0.0, 0.3})
+	{
+		EXPECT_EQ(score(*old, 120, dx), score(legacy, 120, dx));
+		EXPECT_NE(score(a, 120, dx), score(legacy, 120, dx));  // the grid does change the score
+	}
+}
+
+TEST(SweptGridMap, OptionsAreReadStrictly)
+{
+	const auto path = (std::filesystem::temp_directory_path() / ("whiskermap_swept_" + std::to_string(::getpid()) + ".ini")).string();
+	const auto load = [&](const std::string& likelihood, const std::string& insert) {
+		std::ofstream(path) << "[MetricMap]\nhierarchicalObjectMap_count=1\n"
+							<< "[MetricMap_hierarchicalObjectMap_00_likelihoodOpts]\n" << likelihood
+							<< "[MetricMap_hierarchicalObjectMap_00_insertOpts]\n" << insert;
+		return maps::MapConfig::load(path);
+	};
+	const auto good = load("use_swept_grid=true\ncell_prior=0.2\ncell_prior_sweeps=3\np_unexplored=0.01\n", "swept_cell=0.2\n");
+	const auto m = mrpt::maps::CMultiMetricMap(good).mapByClass<CHierarchicalObjectMap>();
+	ASSERT_TRUE(m);
+	EXPECT_TRUE(m->likelihoodOptions.sweep.use_swept_grid);
+	EXPECT_EQ(m->likelihoodOptions.sweep.cell_prior, 0.2);
+	EXPECT_EQ(m->likelihoodOptions.sweep.cell_prior_sweeps, 3);
+	EXPECT_EQ(m->likelihoodOptions.sweep.p_unexplored, 0.01);
+	EXPECT_EQ(m->insertionOptions.swept_cell, 0.2);
+	EXPECT_THROW(load("cell_prior=1\n", ""), core::Error);
+	EXPECT_THROW(load("p_unexplored=0\n", ""), core::Error);
+	EXPECT_THROW(load("use_swept_grid=maybe\n", ""), core::Error);
+	EXPECT_THROW(load("", "swept_cell=0\n"), core::Error);
+	std::filesystem::remove(path);
+}
