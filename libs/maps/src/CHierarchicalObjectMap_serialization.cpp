@@ -275,6 +275,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 2:
 		case 3:
 		case 4:
+		case 5:
 		{
 			internal_clear();
 			in >> genericMapParams;
