@@ -5,7 +5,7 @@
 # default noise, seed 1. Every figure is GNU time's elapsed seconds and maximum resident set size.
 # Usage: scripts/bench-million.sh [BUILD_DIR] [WORK_DIR]
 # Environment: POSES (default "4000 1000000"; multiples of 400), APPS (default
-#   "sim eval baseline export map"; map is the slowest: about 2 ms a sweep, so about an hour
+#   "sim eval baseline export map"; map is the slowest: 2-5 ms a sweep, so one to two hours
 #   for a million poses on one core).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
