@@ -29,14 +29,14 @@ if [[ ! -s map.simplemap ]]; then
   "$map" -q -i exact.rawlog -o objmap --simplemap
   ln -sf objmap/map.simplemap map.simplemap
 fi
-rawlog-edit -w --cut --to-index $((2 * steps - 1)) -i "$data.rawlog" -o run.rawlog \
+LD_PRELOAD="${WHISKERMAP_TOOL_PRELOAD:-}" rawlog-edit -w --cut --to-index $((2 * steps - 1)) -i "$data.rawlog" -o run.rawlog \
   -p "$build/libs/obs/libwhiskermap-obs.so" >/dev/null 2>&1 </dev/null
 awk -v n="$((steps + 1))" '/^%/ || ++k <= n' "${data}_ground_truth_robot_path.txt" >truth.txt
 
 converged=0 total=0
 for seed in ${SEEDS:-1 2 3 4 5 6 7 8 9 10}; do
   t0=$SECONDS
-  WHISKERMAP_PF_SEED=$seed LD_PRELOAD="$shim:$maps" timeout 3600 \
+  WHISKERMAP_PF_SEED=$seed LD_PRELOAD="${WHISKERMAP_TOOL_PRELOAD:+$WHISKERMAP_TOOL_PRELOAD:}$shim:$maps" timeout 3600 \
     pf-localization "$ini" run.rawlog </dev/null >pf-$seed.log 2>&1 || { tail -5 pf-$seed.log; echo "seed $seed: pf-localization FAILED"; exit 1; }
   secs=$((SECONDS - t0))
   sed -n 's/.*PDF estimation: (\([-0-9.e]*\),\([-0-9.e]*\),\([-0-9.e]*\)deg).*/\1 \2 \3/p' pf-$seed.log >est-$seed.txt

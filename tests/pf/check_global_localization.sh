@@ -14,11 +14,13 @@ steps=${STEPS:-60}
 command -v pf-localization >/dev/null ||
   { echo "pf-localization not installed (scripts/install-deps.sh --tools installs mrpt-apps)"; exit 1; }
 rm -rf "$work"; mkdir -p "$work"
-out=$(SEEDS=1 STEPS=$steps "$src/scripts/global-localization.sh" "$build" "$work")
+out=$(SEEDS=1 STEPS=$steps "$src/scripts/global-localization.sh" "$build" "$work") ||
+  { echo "$out"; echo "FAIL: scripts/global-localization.sh failed (logs: $work)"; exit 1; }
 echo "$out"
 grep -q "^converged: 1 of 1 " <<<"$out" || { echo "FAIL: global localisation did not converge (logs: $work)"; exit 1; }
 grep -v '^use_swept_grid = true$' "$src/config/pf-global-localization.ini" >"$work/no-grid.ini"
-ctl=$(INI=$work/no-grid.ini SEEDS=1 STEPS=$steps "$src/scripts/global-localization.sh" "$build" "$work")
+ctl=$(INI=$work/no-grid.ini SEEDS=1 STEPS=$steps "$src/scripts/global-localization.sh" "$build" "$work") ||
+  { echo "$ctl"; echo "FAIL: the control run failed (logs: $work)"; exit 1; }
 echo "control without the swept grid: $ctl"
 grep -q "^converged: 0 of 1 " <<<"$ctl" || { echo "FAIL: the control converged too: the check cannot tell"; exit 1; }
 echo "ok: stock pf-localization localises globally on the whisker map"
