@@ -196,9 +196,7 @@ double logOddsWall(const Blackboard& bb, Id wall)
 	const ModelParams& p = bb.params();
 	const Wall& w = bb.wall(wall);
 	double sum = logWallPrior(w, p) + wallEvidenceGain(bb, wall);  // eq. 23
-	for (const Id s : bb.shapeletsOfWall(wall))
-		sum += logNoisyOr(logShapeletGivenWall(bb.shapelets()[static_cast<size_t>(s)], w, p), logShapeletNull(p)) -
-			   logShapeletNull(p);
+	for (const Id s : bb.shapeletsOfWall(wall)) sum += logShapeletLinked(bb, static_cast<size_t>(s)) - logShapeletNull(p);
 	int legs = 0;
 	const OrientedRect r = w.rect();
 	for (Id l = 0; l < bb.legIdBound(); l++) legs += bb.hasLeg(l) && legRect(bb.leg(l)).overlaps(r);
