@@ -182,7 +182,6 @@ bool CHierarchicalObjectMap::internal_insertObservation(
 	const auto* sweep = dynamic_cast<const obs::CObservationWhiskerContacts*>(&o);
 	if (!sweep) return false;
 	const mrpt::poses::CPose2D pose = robotPose ? mrpt::poses::CPose2D(*robotPose) : mrpt::poses::CPose2D();
-	recordSwept(*sweep, pose);
 	if (lasting())
 	{
 		insertLasting(*sweep, pose);
@@ -194,13 +193,15 @@ bool CHierarchicalObjectMap::internal_insertObservation(
 	return true;
 }
 
-void CHierarchicalObjectMap::recordSwept(const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose)
+void CHierarchicalObjectMap::recordSwept(
+	const mrpt::poses::CPose2D& pose, const std::vector<obs::Shapelet>& shapelets,
+	const std::vector<obs::SweptSector>& sectors)
 {
 	if (m_sweptGrid.empty() && m_sweptGrid.cellSize() != insertionOptions.swept_cell)
 		m_sweptGrid.clear(insertionOptions.swept_cell);
 	std::vector<std::array<double, 2>> contacts;
-	for (const auto& s : sweep.toShapelets(pose)) contacts.push_back({s.x, s.y});
-	m_sweptGrid.addSweep(pose.x(), pose.y(), sweep.toSweptSectors(pose), contacts);
+	for (const auto& s : shapelets) contacts.push_back({s.x, s.y});
+	m_sweptGrid.addSweep(pose.x(), pose.y(), sectors, contacts);
 }
 
 void CHierarchicalObjectMap::insertLasting(const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose)
@@ -208,6 +209,7 @@ void CHierarchicalObjectMap::insertLasting(const obs::CObservationWhiskerContact
 	TStepInput in;
 	in.pose = pose;
 	in.shapelets = sweep.toShapelets(pose);
+	recordSwept(pose, in.shapelets, sweep.toSweptSectors(pose));
 	in.seed = splitmix64(insertionOptions.seed ^ splitmix64(m_steps));
 	in.model = modelFor(sweep.noise);
 	m_steps++;
@@ -233,6 +235,8 @@ TStepInput CHierarchicalObjectMap::prepareStep(
 	TStepInput in;
 	in.pose = pose;
 	in.shapelets = sweep.toShapelets(pose);
+	const auto sectors = sweep.toSweptSectors(pose);
+	recordSwept(pose, in.shapelets, sectors);
 	m_memory.add(in.shapelets);  // working memory: the N most recent shapelets
 	in.memory = m_memory.shapelets();
 	in.seed = splitmix64(insertionOptions.seed ^ splitmix64(m_steps));
@@ -241,7 +245,7 @@ TStepInput CHierarchicalObjectMap::prepareStep(
 	{
 		if (m_sweptMemory.capacity() != insertionOptions.memory_size)
 			m_sweptMemory = inference::SweptMemory(insertionOptions.memory_size);
-		m_sweptMemory.add(in.shapelets.size(), sweep.toSweptSectors(pose));
+		m_sweptMemory.add(in.shapelets.size(), sectors);
 		in.swept = m_sweptMemory.sectors();
 	}
 	m_steps++;

@@ -139,7 +139,7 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 
 	/** Per-pose mode: insertObservation in two halves, for callers that solve steps
 	 *  elsewhere (in parallel, with one StepSolver per thread): prepareStep() takes the sweep
-	 *  into the working memory and fixes the step's input; integrateStep() records the solved
+	 *  into the working memory and the swept grid and fixes the step's input; integrateStep() records the solved
 	 *  step and consolidates it. Calls must alternate, in sweep order. */
 	TStepInput prepareStep(const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose);
 	void integrateStep(TStepInput in, inference::StepResult result);
@@ -214,7 +214,9 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	/** The model a sweep with this noise is scored with. */
 	model::ModelParams modelFor(const obs::TSensorNoise& noise) const;
 	/** The sweep's free space and contacts into the swept grid. */
-	void recordSwept(const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose);
+	void recordSwept(
+		const mrpt::poses::CPose2D& pose, const std::vector<obs::Shapelet>& shapelets,
+		const std::vector<obs::SweptSector>& sectors);
 	/** Lasting mode: one insertion. */
 	void insertLasting(const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose);
 	/** A consolidated object (per-pose mode) or a lasting table, as written out. */
