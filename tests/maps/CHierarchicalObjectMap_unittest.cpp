@@ -282,13 +282,15 @@ TEST(CHierarchicalObjectMap, SerializationRoundTripThroughCMultiMetricMap)
 			  m.map->computeObservationLikelihood(*s.obs, mrpt::poses::CPose3D(s.robotPose)));
 }
 
-// Version 2 stores the optional model keys (shaft noise, free space), not only their defaults.
+// Version 2 stores the optional model keys (shaft noise, free space), not only their defaults;
+// version 6 sigma_corner.
 TEST(CHierarchicalObjectMap, SerializationKeepsTheOptionalModelKeys)
 {
 	CHierarchicalObjectMap a;
 	a.modelParams.shaft_noise = a.modelParams.free_space = true;
 	a.modelParams.sigma_across = 0.003;
 	a.modelParams.free_space_p_miss = 0.2;
+	a.modelParams.sigma_corner = 0.004;
 	const auto b = reloaded(a);
 	ASSERT_TRUE(b);
 	EXPECT_EQ(b->modelParams, a.modelParams);
@@ -343,10 +345,11 @@ TEST(CHierarchicalObjectMap, PerPoseSerializationRoundTrip)
 
 // Lasting mode: a copy (as a particle filter makes) and a deserialized map continue exactly
 // as the original; another seed gives another state. With shaft noise the contacts' shafts
-// must survive too (a reload that lost them would score them isotropically).
-static void expectLastingCopiesContinue(bool shaftNoise)
+// must survive too (a reload that lost them would score them isotropically). Very noisy
+// sweeps run revisions (noisy_revisions), whose round robin must survive too.
+static void expectLastingCopiesContinue(bool shaftNoise, const std::string& preset = "default")
 {
-	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/paper_arena/default.rawlog");
+	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/paper_arena/" + preset + ".rawlog");
 	CHierarchicalObjectMap a, c;
 	a.modelParams.shaft_noise = c.modelParams.shaft_noise = shaftNoise;
 	c.insertionOptions.seed = 99;
@@ -364,11 +367,14 @@ static void expectLastingCopiesContinue(bool shaftNoise)
 	auto d = std::dynamic_pointer_cast<CHierarchicalObjectMap>(arch.ReadObject());
 	ASSERT_TRUE(d);
 	EXPECT_EQ(fingerprint(*d), fingerprint(a));
+	uint32_t revisions = 0;
 	for (size_t i = 120; i < 240; i++)
 	{
 		const mrpt::poses::CPose3D p(rawlog.sweeps[i].robotPose);
 		for (auto* m : {&a, &b, d.get(), &c}) m->insertObservation(*rawlog.sweeps[i].obs, p);
+		revisions += a.lastLastingStats().revisions;
 	}
+	EXPECT_EQ(revisions > 0, preset == "very-noisy");  // only sweeps noisier than sigma_corner
 	EXPECT_EQ(fingerprint(b), fingerprint(a));
 	EXPECT_EQ(fingerprint(*d), fingerprint(a));
 	EXPECT_NE(fingerprint(c), fingerprint(a));
@@ -380,6 +386,10 @@ TEST(CHierarchicalObjectMap, LastingCopiesAndReloadsContinueIdentically) { expec
 TEST(CHierarchicalObjectMap, LastingCopiesAndReloadsContinueIdenticallyWithShaftNoise)
 {
 	expectLastingCopiesContinue(true);
+}
+TEST(CHierarchicalObjectMap, LastingCopiesAndReloadsContinueIdenticallyWithRevisions)
+{
+	expectLastingCopiesContinue(false, "very-noisy");
 }
 
 TEST(CHierarchicalObjectMap, PerPoseSameSeedSameMapAndCopiesContinueIdentically)

@@ -112,11 +112,12 @@ TEST(SweptGridMap, VersionFourStreamsLoadWithoutTheGrid)
 	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
 	ASSERT_EQ(bytes[0], static_cast<uint8_t>(name.size() | 0x80));
 	ASSERT_EQ(std::string(bytes.begin() + 1, bytes.begin() + 1 + static_cast<long>(name.size())), name);
-	ASSERT_EQ(bytes[1 + name.size()], 5);
+	ASSERT_EQ(bytes[1 + name.size()], 6);
 	bytes[1 + name.size()] = 4;
 	// version 5's tail: swept_cell, free_space, cell_prior, cell_prior_sweeps, p_unexplored,
-	// the grid's cell edge and count, 12 bytes a cell; then MRPT's end flag
-	const size_t tail = 8 + 1 + 8 + 8 + 8 + 8 + 4 + 12 * a.sweptGrid().cells().size();
+	// the grid's cell edge and count, 12 bytes a cell; version 6's sigma_corner,
+	// noisy_revisions and revision round robin's insertion number; then MRPT's end flag
+	const size_t tail = 8 + 1 + 8 + 8 + 8 + 8 + 4 + 12 * a.sweptGrid().cells().size() + 8 + 4 + 8;
 	bytes.erase(bytes.end() - 1 - static_cast<long>(tail), bytes.end() - 1);
 	const auto old = read(bytes);
 	ASSERT_TRUE(old);

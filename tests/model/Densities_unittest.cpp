@@ -95,6 +95,11 @@ TEST(Densities, LegGivenTableByHand)
 	const LegFit f = logLegGivenTable(l, table, p);  // eqs. 5-6
 	EXPECT_EQ(f.corner, 3);
 	EXPECT_NEAR(f.logDensity, 2.0 - 10.0, 1e-9);
+	// eq. 6's position term is sigma_corner's alone: half of it, and 1 + 4 becomes 4 + 16
+	ModelParams tight = p;
+	tight.sigma_corner = p.sigma_r / 2;
+	tight.sigma_r = 1;  // eq. 7's noise plays no part
+	EXPECT_NEAR(logLegGivenTable(l, table, tight).logDensity, 2.0 - 25.0, 1e-9);
 }
 
 TEST(Densities, LegAngleComparedModuloNinetyDegrees)

@@ -27,6 +27,7 @@ TEST(ModelParams, ShippedConfigEqualsBuiltInDefaults)
 	EXPECT_EQ(f.sigma_tau, d.sigma_tau);
 	EXPECT_EQ(f.shaft_noise, d.shaft_noise);
 	EXPECT_EQ(f.sigma_across, d.sigma_across);
+	EXPECT_EQ(f.sigma_corner, d.sigma_corner);
 	EXPECT_EQ(f.c_T, d.c_T);
 	EXPECT_EQ(f.c_L, d.c_L);
 	EXPECT_EQ(f.c_S, d.c_S);
@@ -80,6 +81,11 @@ TEST(ModelParams, UnknownMissingAndBadKeysFail)
 	EXPECT_EQ(load(text + "sigma_across=0.003\n").sigma_across, 0.003);
 	EXPECT_THROW(load(text + "shaft_noise=maybe\n"), core::Error);
 	EXPECT_THROW(load(text + "sigma_across=0\n"), core::Error);
+	// sigma_corner (eq. 6) is optional: sigma_r when absent, strict when given.
+	EXPECT_EQ(load(with("sigma_r=0.01", "sigma_r=0.03")).sigma_corner, 0.03);
+	EXPECT_EQ(load(text + "sigma_corner=0.002\n").sigma_corner, 0.002);
+	EXPECT_THROW(load(text + "sigma_corner=0\n"), core::Error);
+	EXPECT_THROW(load(text + "sigma_corner=nan\n"), core::Error);
 	// The free-space keys are optional (eq. 21: off, p_miss 0.05), read strictly when given.
 	EXPECT_FALSE(load(text).free_space);
 	EXPECT_EQ(load(text).free_space_p_miss, 0.05);

@@ -138,7 +138,7 @@ class Search
 	/** Minimiser of the quadratic part of eqs. 6-7 for a leg explaining `mask`, each contact
 	 *  on the face whose normal matches its own: yaw = mean of the normals' (and the table's)
 	 *  yaws modulo 90 deg; centre = least squares of "each contact on its face line" and
-	 *  "near (qx, qy)" with weight `pull` (1: a table corner, same sigma_r; tiny for a free leg:
+	 *  "near (qx, qy)" with weight `pull` (a table corner: ModelParams::cornerPull; tiny for a free leg:
 	 *  it only fixes the position along a face), then moved so each contact lies on its face
 	 *  rather than beyond it. */
 	Leg closedForm(uint32_t mask, const Table* t, double qx, double qy, double pull) const
@@ -182,7 +182,7 @@ class Search
 	{
 		double qx = 0, qy = 0;
 		model::tableCorner(t, corner, m_p, qx, qy);
-		out = closedForm(g.mask, &t, qx, qy, 1);
+		out = closedForm(g.mask, &t, qx, qy, m_p.cornerPull());
 		double best = legGain(g.mask, out, &t, corner);
 		if (sq(g.free.x - qx) + sq(g.free.y - qy) > sq(m_p.parent_gate)) return best;
 		Leg alt = g.free;

@@ -123,7 +123,7 @@ model::Table fitTable(
 	}
 	const double procrustes = spread > 0 ? std::atan2(cross, dot) : start.theta;
 	// Both yaw terms are quadratic near the optimum: weight each by its curvature.
-	const double kPos = spread / sq(p.sigma_r), kYaw = 1 / sq(p.sigma_theta);
+	const double kPos = spread / sq(p.sigma_corner), kYaw = 1 / sq(p.sigma_theta);
 	double yawSum = 0;
 	for (size_t i = 0; i < n; i++) yawSum += core::angleDiff(legs[i]->theta, procrustes, M_PI_2);
 	model::Table t = start;

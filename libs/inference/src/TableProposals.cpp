@@ -4,6 +4,7 @@
 #include <whiskermap/model/Posterior.h>
 
 #include <cmath>
+#include <limits>
 
 namespace whiskermap::inference
 {
@@ -76,16 +77,21 @@ size_t adoptable(const model::Blackboard& bb, const Table& t, Id l, std::vector<
 	const model::ModelParams& p = bb.params();
 	double cx[4], cy[4], d2 = 0;
 	model::tableCorners(t, p, cx, cy);
-	bool taken[4] = {false, false, false, false};
-	taken[model::nearestCorner(cx, cy, bb.leg(l).x, bb.leg(l).y, d2)] = true;
+	const int own = model::nearestCorner(cx, cy, bb.leg(l).x, bb.leg(l).y, d2);
 	out.clear();
-	// Legs within the gate of each empty corner (corners are far more than two gates apart).
+	// The nearest leg within the gate of each empty corner (corners are far more than two
+	// gates apart; at very noisy readings the gate is wide enough to hold a neighbour's leg).
 	for (int c = 0; c < 4; c++)
+	{
+		if (c == own) continue;
+		Id nearest = model::NONE;
+		double best = std::numeric_limits<double>::infinity();
 		bb.forEachLegNear(cx[c], cy[c], p.parent_gate, [&](Id o) {
-			if (o == l || taken[c]) return;
-			taken[c] = true;
-			out.push_back(o);
+			const double d = std::hypot(bb.leg(o).x - cx[c], bb.leg(o).y - cy[c]);
+			if (o != l && d < best) best = d, nearest = o;
 		});
+		if (nearest != model::NONE) out.push_back(nearest);
+	}
 	return out.size();
 }
 }  // namespace whiskermap::inference

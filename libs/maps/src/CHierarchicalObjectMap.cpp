@@ -281,6 +281,10 @@ model::ModelParams CHierarchicalObjectMap::modelFor(const obs::TSensorNoise& noi
 	if (noise.sigma_r > m.sigma_r)
 	{
 		m.parent_gate *= noise.sigma_r / m.sigma_r;
+		// The per-pose mode keeps the paper's single sigma_r (eqs. 6-7); the lasting map raises
+		// only the readings' noise (eq. 7): legs stand at their corners however noisy the
+		// sensor (doc/model.md, "Two noises").
+		if (!lasting()) m.sigma_corner *= noise.sigma_r / m.sigma_r;
 		m.sigma_r = noise.sigma_r;
 	}
 	m.sigma_theta = std::max(m.sigma_theta, noise.sigma_phi);

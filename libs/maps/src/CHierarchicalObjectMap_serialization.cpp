@@ -2,11 +2,13 @@
 // lasting map) still loads, as a per-pose map; version 1 (no shaft directions) as contacts
 // without a known shaft; versions before 3 with the lasting tables reported at their own poses;
 // versions before 4 without walls (walls = false); versions before 5 with an empty swept grid
-// (the likelihood then knows no free space).
+// (the likelihood then knows no free space); versions before 6 with sigma_corner = sigma_r and
+// no revisions.
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/model/ObjectCatalogue.h>
 
+#include <cmath>
 #include <cstdlib>
 
 using mrpt::serialization::CArchive;
@@ -212,7 +214,7 @@ void readSwept(CArchive& in, model::SweptGrid& g)
 }
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 5; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 6; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -264,6 +266,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	const auto& sw = likelihoodOptions.sweep;
 	out << insertionOptions.swept_cell << sw.use_swept_grid << sw.cell_prior << sw.cell_prior_sweeps << sw.p_unexplored;
 	writeSwept(out, m_sweptGrid);
+	// Version 6: eq. 6's own position noise, the lasting map's revisions.
+	out << m.sigma_corner << l.noisy_revisions << m_lasting.reviseSeq();
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -276,6 +280,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 3:
 		case 4:
 		case 5:
+		case 6:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -347,6 +352,17 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 				in >> insertionOptions.swept_cell >> sw.use_swept_grid >> sw.cell_prior >> sw.cell_prior_sweeps >> sw.p_unexplored;
 				readSwept(in, m_sweptGrid);  // older streams: empty (internal_clear above)
 			}
+			m.sigma_corner = m.sigma_r;  // versions before 6: the paper's single sigma_r, no revisions
+			insertionOptions.lasting.noisy_revisions = 0;
+			if (version >= 6)
+			{
+				in >> m.sigma_corner >> insertionOptions.lasting.noisy_revisions;
+				if (insertionOptions.lasting.noisy_revisions > 1000)
+					THROW_EXCEPTION("CHierarchicalObjectMap: corrupt options (noisy_revisions above 1000)");
+				m_lasting.setReviseSeq(in.ReadAs<uint64_t>());  // any value is valid (a round robin's start)
+			}
+			if (!(m.sigma_corner > 0) || !std::isfinite(m.sigma_corner))
+				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt model (sigma_corner not a positive number)");
 			m_consolidator.setObjects(std::move(objs));
 			m_consolidator.setOptions(c);
 		}

@@ -76,7 +76,7 @@ LegFit logLegGivenTable(const Leg& l, const Table& t, const ModelParams& p)
 	double cx[4], cy[4], best = 0;
 	tableCorners(t, p, cx, cy);
 	fit.corner = nearestCorner(cx, cy, l.x, l.y, best);
-	const double delta = best / sq(p.sigma_r) +
+	const double delta = best / sq(p.sigma_corner) +
 						 sq(core::angleDiff(t.theta, l.theta, M_PI_2) / p.sigma_theta) +
 						 sq((t.leg_width - l.wx) / p.sigma_w) + sq((t.leg_width - l.wy) / p.sigma_w) +
 						 sq((t.texture - l.texture) / p.sigma_tau);

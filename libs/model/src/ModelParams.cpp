@@ -16,6 +16,7 @@ ModelParams ModelParams::fromIni(core::IniSection& sec)
 	p.sigma_theta = sec.number("sigma_theta", 1e-6, M_PI);
 	p.sigma_w = sec.number("sigma_w", 1e-6, 10);
 	p.sigma_tau = sec.number("sigma_tau", 1e-6, 10);
+	p.sigma_corner = sec.number("sigma_corner", p.sigma_r, 1e-6, 10);
 	p.shaft_noise = sec.boolean("shaft_noise", false);
 	p.sigma_across = sec.number("sigma_across", 0.002, 1e-6, 10);
 	p.c_T = sec.number("c_T", 1e-300, BIG);
@@ -67,7 +68,7 @@ bool ModelParams::operator==(const ModelParams& o) const
 {
 	auto tie = [](const ModelParams& p) {
 		return std::tie(
-			p.sigma_r, p.sigma_theta, p.sigma_w, p.sigma_tau, p.shaft_noise, p.sigma_across, p.c_T, p.c_L, p.c_S,
+			p.sigma_r, p.sigma_theta, p.sigma_w, p.sigma_tau, p.sigma_corner, p.shaft_noise, p.sigma_across, p.c_T, p.c_L, p.c_S,
 			p.alpha_L, p.alpha_S, p.epsilon, p.delta, p.table_length, p.table_width, p.leg_width, p.texture,
 			p.parent_gate, p.free_space, p.free_space_p_miss, p.walls, p.c_W, p.wall_length_scale, p.wall_thickness,
 			p.classes);

@@ -97,7 +97,7 @@ bool MoveContext::fittedLeg(Id l, const model::Table* t, Leg& out)
 	if (t)
 	{
 		model::tableCorner(*t, model::logLegGivenTable(leg, *t, mp).corner, mp, qx, qy);
-		pull = 1;
+		pull = mp.cornerPull();
 	}
 	out = fitLeg(mp, m_contacts.data(), m_contacts.size(), t, qx, qy, pull, &evidence);
 	out.parent = leg.parent;

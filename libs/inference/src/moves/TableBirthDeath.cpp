@@ -85,10 +85,13 @@ Proposal TableBirthDeath::birth(MoveContext& ctx, Id l)
 	}
 	// An adopted leg of another width than the table's (an object catalogue's class: a chair's
 	// 3 cm legs) is refitted at the table's leg width in the same move; never without a
-	// catalogue (every width is then leg_width).
+	// catalogue (every width is then leg_width). When the corner binds a leg tighter than its
+	// contacts do (sigma_corner < sigma_r: very noisy readings in the lasting map), every
+	// adopted leg is refitted: its best pose under the table is near the corner.
 	m_resized.clear();
+	const bool refitAll = ctx.mp.sigma_corner < ctx.mp.sigma_r;
 	for (const Id a : m_candidates)
-		if (bb.leg(a).wx != chosen.leg_width || bb.leg(a).wy != chosen.leg_width) m_resized.push_back(a);
+		if (refitAll || bb.leg(a).wx != chosen.leg_width || bb.leg(a).wy != chosen.leg_width) m_resized.push_back(a);
 	m_restore = !m_abandoned.empty() || !m_resized.empty();
 	if (m_restore) m_backup = bb;
 

@@ -31,7 +31,7 @@ void addCentreEquations(
 /** The square leg (side: table t's leg width, else leg_width) best explaining `n` contacts, each on the face whose
  *  outward normal matches its own, optionally under table `t`: yaw = mean of the normals'
  *  (and the table's) yaws modulo 90 deg; centre = least squares of "each contact on its
- *  face line" plus "near (qx, qy)" with weight `pull` (1: a table corner, same sigma_r;
+ *  face line" plus "near (qx, qy)" with weight `pull` (a table corner: ModelParams::cornerPull;
  *  tiny: only fixes the position along a face), then moved along each face so that the face
  *  stays the contact's nearest (not beyond its end; for a contact inside the leg, nearer
  *  its centre than the contact's depth). Texture: mean of the contacts' and the table's.

@@ -21,7 +21,7 @@ void tablesForPairs(const model::Blackboard& bb, model::Id l, std::vector<model:
 void tablesForPairs(const model::Blackboard& bb, model::Id l, int cls, std::vector<model::Table>& out);
 
 /** Fills `out` with the legs other than `l` that table `t` would adopt (l at its nearest
- *  corner, then at most one leg per other corner, within the parent gate of it); returns
+ *  corner, then at each other corner the leg nearest to it within the parent gate, if any); returns
  *  their number. */
 size_t adoptable(const model::Blackboard& bb, const model::Table& t, model::Id l, std::vector<model::Id>& out);
 

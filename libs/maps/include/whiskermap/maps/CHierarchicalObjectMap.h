@@ -54,7 +54,8 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 		uint64_t seed = 1;  ///< step k uses a seed derived from (seed, k)
 		/** Raise the model's sigma_r, sigma_theta, sigma_tau to the noise each sweep reports
 		 *  when it is larger (the paper's eq. 7 uses the sensor noise), scaling parent_gate
-		 *  with sigma_r. */
+		 *  with sigma_r; the per-pose mode raises sigma_corner (eq. 6) with sigma_r, the
+		 *  lasting mode does not. */
 		bool use_sensor_noise = true;
 		/** Keep every per-pose record and shapelet (poseRecords(), shapelets()). Off, memory
 		 *  stays bounded by the map, whatever the trajectory's length: a streaming consumer

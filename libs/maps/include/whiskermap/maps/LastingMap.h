@@ -31,6 +31,14 @@ class LastingMap
 		/** Unexplained contacts kept within one leg width of each other; older ones are
 		 *  forgotten (they never found a cause). */
 		uint32_t unexplained_per_spot = 4;
+		/** Revisions after each insertion whose readings are looser than the legs' placement
+		 *  (model sigma_r > sigma_corner: the very noisy sensor, doc/model.md "Two noises"):
+		 *  each re-anneals, with the sampler's full schedule, the local problem around the
+		 *  explicit contacts of the next leg in a round robin over the map's legs (in the
+		 *  insertion order of their contacts), so that
+		 *  tables assembled from neighbours' legs before the right legs were touched are taken
+		 *  apart later (doc/map-plugin.md, "Revisions"). 0: never. */
+		uint32_t noisy_revisions = 2;
 		/** Report each table at the pose of its rigid fit to all its legs' contacts
 		 *  (inference::fitRigidTable), refitted when its legs change; false: the model's own
 		 *  table pose (legs loose at its corners, eq. 6). */
@@ -58,14 +66,15 @@ class LastingMap
 		uint32_t visited = 0, boardHypotheses = 0, boardContacts = 0;
 		std::array<uint32_t, inference::MOVE_COUNT> proposed{}, accepted{};
 		bool changed = false;  ///< the state was written (the sweep had contacts)
+		uint32_t revisions = 0;  ///< older regions revised after the insertion (noisy_revisions)
 		double initialLogPosterior = 0, logPosterior = 0;  ///< local problem: associated, annealed
 	};
 
 	LastingMap() = default;
-	LastingMap(const LastingMap& o) : m_state(o.m_state), m_options(o.m_options) {}
+	LastingMap(const LastingMap& o) : m_state(o.m_state), m_options(o.m_options), m_reviseSeq(o.m_reviseSeq) {}
 	LastingMap& operator=(const LastingMap& o)
 	{
-		m_state = o.m_state, m_options = o.m_options;
+		m_state = o.m_state, m_options = o.m_options, m_reviseSeq = o.m_reviseSeq;
 		return *this;
 	}
 
@@ -80,9 +89,23 @@ class LastingMap
 
 	const model::LastingState& state() const { return m_state; }
 	model::LastingState& state() { return m_state; }
-	void clear() { m_state.clear(); }
+	/** The insertion number (LastingState::Contact::seq) the next revision starts its round
+	 *  robin from (serialized with the map: content, not store ids, so a reload continues as
+	 *  the original would). */
+	uint64_t reviseSeq() const { return m_reviseSeq; }
+	void setReviseSeq(uint64_t s) { m_reviseSeq = s; }
+	void clear() { m_state.clear(), m_reviseSeq = 0; }
 
    private:
+	/** The local problem around m_new: extracted, annealed with `sampler` (built once per
+	 *  model and schedule into `cache`), written back. */
+	TStats solve(
+		const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed,
+		std::unique_ptr<inference::BlackboardSampler>& cache);
+	/** One revision (TOptions::noisy_revisions): the problem around the explicit contacts of
+	 *  the leg holding the oldest explicit contact inserted at or after m_reviseSeq (from the
+	 *  oldest again when none is); false when no leg holds a contact. */
+	bool reviseNext(const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed);
 	/** Existence of each table of `solved` (grown from `start`, the region's board). */
 	std::vector<double> existence(
 		const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model);
@@ -95,8 +118,10 @@ class LastingMap
 
 	model::LastingState m_state;
 	TOptions m_options;
-	// Reused across insertions (not copied: a copy rebuilds them).
-	std::unique_ptr<inference::BlackboardSampler> m_sampler;
+	uint64_t m_reviseSeq = 0;
+	// Reused across insertions (not copied: a copy rebuilds them): the local schedule's
+	// sampler and the revisions' (the sampler's full schedule), each for m_samplerModel.
+	std::unique_ptr<inference::BlackboardSampler> m_sampler, m_reviser;
 	model::ModelParams m_samplerModel;
 	TOptions::TSchedule m_samplerSchedule;
 	std::unique_ptr<model::LastingState::Region> m_region;

@@ -16,6 +16,13 @@ struct ModelParams
 	double sigma_theta = 0.087;  ///< angle, radians (5 degrees)
 	double sigma_w = 0.01;  ///< leg width, metres
 	double sigma_tau = 0.1;  ///< texture
+	/** Eq. 6's position noise: a leg's centre against its table's corner, metres (optional key,
+	 *  default sigma_r). The furniture's own precision: the lasting map never raises it to a
+	 *  sweep's reported noise (CHierarchicalObjectMap::modelFor; doc/model.md, "Two noises"). */
+	double sigma_corner = 0.01;
+	/** A leg's pull towards its table's corner in a closed-form leg fit (PoseFit.h), in units of
+	 *  one contact's weight 1 / sigma_r^2: (sigma_r / sigma_corner)^2. */
+	double cornerPull() const { return (sigma_r / sigma_corner) * (sigma_r / sigma_corner); }
 	/** Contact noise along the whisker's shaft (doc/model.md, "Shaft noise"): a contact's
 	 *  distance across a face with outward normal u has variance
 	 *  sigma_r^2 (u . shaft)^2 + sigma_across^2 instead of the paper's sigma_r^2 (eq. 7). */
