@@ -156,6 +156,9 @@ LastingMap::TStats LastingMap::solve(
 	// The local problem around the new contacts.
 	model::LastingState::Radii radii;
 	radii.visit = m_options.visit_radius;
+	// A revision visits every leg that could share a table with the revised one, and every
+	// table that could hold it: a table diagonal and a parent gate around its contacts.
+	if (&cache == &m_reviser) radii.visit = std::max(radii.visit, model.maxDiagonal() + model.parent_gate);
 	radii.board = radii.visit + std::hypot(model.table_length, model.table_width) + 2 * model.parent_gate;
 	radii.context = radii.board + std::hypot(model.table_length, model.table_width);
 	if (!m_region) m_region = std::make_unique<model::LastingState::Region>(model);

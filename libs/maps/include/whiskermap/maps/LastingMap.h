@@ -35,7 +35,8 @@ class LastingMap
 		 *  (model sigma_r > sigma_corner: the very noisy sensor, doc/model.md "Two noises"):
 		 *  each re-anneals, with the sampler's full schedule, the local problem around the
 		 *  explicit contacts of the next leg in a round robin over the map's legs (in the
-		 *  insertion order of their contacts), so that
+		 *  insertion order of their contacts), visiting every hypothesis within a table
+		 *  diagonal of them (not only within visit_radius), so that
 		 *  tables assembled from neighbours' legs before the right legs were touched are taken
 		 *  apart later (doc/map-plugin.md, "Revisions"). 0: never. */
 		uint32_t noisy_revisions = 2;
