@@ -36,9 +36,9 @@ class LastingMap
 		 *  each re-anneals, with the sampler's full schedule, the local problem around the
 		 *  explicit contacts of the next leg in a round robin over the map's legs (in the
 		 *  insertion order of their contacts), visiting every hypothesis within a table
-		 *  diagonal of them (not only within visit_radius), so that
-		 *  tables assembled from neighbours' legs before the right legs were touched are taken
-		 *  apart later (doc/map-plugin.md, "Revisions"). 0: never. */
+		 *  diagonal plus a parent gate of them (not only within visit_radius), so that tables
+		 *  assembled from neighbours' legs before the right legs were touched are taken apart
+		 *  later (doc/map-plugin.md, "What it does", step 9). 0: never. */
 		uint32_t noisy_revisions = 2;
 		/** Report each table at the pose of its rigid fit to all its legs' contacts
 		 *  (inference::fitRigidTable), refitted when its legs change; false: the model's own
