@@ -87,8 +87,8 @@ size_t adoptable(const model::Blackboard& bb, const Table& t, Id l, std::vector<
 		Id nearest = model::NONE;
 		double best = std::numeric_limits<double>::infinity();
 		bb.forEachLegNear(cx[c], cy[c], p.parent_gate, [&](Id o) {
-			const double d = std::hypot(bb.leg(o).x - cx[c], bb.leg(o).y - cy[c]);
-			if (o != l && d < best) best = d, nearest = o;
+			const double d2c = (bb.leg(o).x - cx[c]) * (bb.leg(o).x - cx[c]) + (bb.leg(o).y - cy[c]) * (bb.leg(o).y - cy[c]);
+			if (o != l && d2c < best) best = d2c, nearest = o;
 		});
 		if (nearest != model::NONE) out.push_back(nearest);
 	}

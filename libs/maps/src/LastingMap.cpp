@@ -119,8 +119,8 @@ LastingMap::TStats LastingMap::insert(
 	}
 	m_new.clear();
 	for (const auto& s : contacts) m_new.push_back(m_state.addContact(s));
-	TStats stats = solve(model, localSampler(sampler, m_options.schedule), seed, m_sampler);
-	if (model.sigma_r > model.sigma_corner)
+	TStats stats = solve(model, localSampler(sampler, m_options.schedule), m_options.visit_radius, seed, m_sampler);
+	if (model.cornersTighterThanReadings())
 		for (uint32_t k = 0; k < m_options.noisy_revisions; k++)
 			stats.revisions += reviseNext(model, sampler, seed ^ (0x9E3779B97F4A7C15ULL * (k + 1)));
 	return stats;
@@ -144,21 +144,19 @@ bool LastingMap::reviseNext(const model::ModelParams& model, const inference::Sa
 	if (pick == model::NONE) return false;
 	m_new = m_state.contactsOf(m_state.contact(pick).leg);
 	for (const model::Id c : m_new) m_reviseSeq = std::max(m_reviseSeq, m_state.contact(c).seq + 1);
-	solve(model, sampler, seed, m_reviser);
+	// Every leg that could share a table with the revised one, every table that could hold it.
+	solve(model, sampler, std::max(m_options.visit_radius, model.maxDiagonal() + model.parent_gate), seed, m_reviser);
 	return true;
 }
 
 LastingMap::TStats LastingMap::solve(
-	const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed,
+	const model::ModelParams& model, const inference::SamplerParams& sampler, double visit, uint64_t seed,
 	std::unique_ptr<inference::BlackboardSampler>& cache)
 {
 	TStats stats;
 	// The local problem around the new contacts.
 	model::LastingState::Radii radii;
-	radii.visit = m_options.visit_radius;
-	// A revision visits every leg that could share a table with the revised one, and every
-	// table that could hold it: a table diagonal and a parent gate around its contacts.
-	if (&cache == &m_reviser) radii.visit = std::max(radii.visit, model.maxDiagonal() + model.parent_gate);
+	radii.visit = visit;
 	radii.board = radii.visit + std::hypot(model.table_length, model.table_width) + 2 * model.parent_gate;
 	radii.context = radii.board + std::hypot(model.table_length, model.table_width);
 	if (!m_region) m_region = std::make_unique<model::LastingState::Region>(model);

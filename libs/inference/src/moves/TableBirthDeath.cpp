@@ -89,7 +89,7 @@ Proposal TableBirthDeath::birth(MoveContext& ctx, Id l)
 	// contacts do (sigma_corner < sigma_r: very noisy readings in the lasting map), every
 	// adopted leg is refitted: its best pose under the table is near the corner.
 	m_resized.clear();
-	const bool refitAll = ctx.mp.sigma_corner < ctx.mp.sigma_r;
+	const bool refitAll = ctx.mp.cornersTighterThanReadings();
 	for (const Id a : m_candidates)
 		if (refitAll || bb.leg(a).wx != chosen.leg_width || bb.leg(a).wy != chosen.leg_width) m_resized.push_back(a);
 	m_restore = !m_abandoned.empty() || !m_resized.empty();

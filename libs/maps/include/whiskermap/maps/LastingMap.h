@@ -98,10 +98,10 @@ class LastingMap
 	void clear() { m_state.clear(), m_reviseSeq = 0; }
 
    private:
-	/** The local problem around m_new: extracted, annealed with `sampler` (built once per
-	 *  model and schedule into `cache`), written back. */
+	/** The local problem around m_new (hypotheses within `visit` metres visited): extracted,
+	 *  annealed with `sampler` (built once per model and schedule into `cache`), written back. */
 	TStats solve(
-		const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed,
+		const model::ModelParams& model, const inference::SamplerParams& sampler, double visit, uint64_t seed,
 		std::unique_ptr<inference::BlackboardSampler>& cache);
 	/** One revision (TOptions::noisy_revisions): the problem around the explicit contacts of
 	 *  the leg holding the oldest explicit contact inserted at or after m_reviseSeq (from the

@@ -23,6 +23,9 @@ struct ModelParams
 	/** A leg's pull towards its table's corner in a closed-form leg fit (PoseFit.h), in units of
 	 *  one contact's weight 1 / sigma_r^2: (sigma_r / sigma_corner)^2. */
 	double cornerPull() const { return (sigma_r / sigma_corner) * (sigma_r / sigma_corner); }
+	/** Readings looser than the legs' placement (the lasting map with a noisy sensor): legs
+	 *  are refitted towards their corners when adopted, and the lasting map revises. */
+	bool cornersTighterThanReadings() const { return sigma_corner < sigma_r; }
 	/** Contact noise along the whisker's shaft (doc/model.md, "Shaft noise"): a contact's
 	 *  distance across a face with outward normal u has variance
 	 *  sigma_r^2 (u . shaft)^2 + sigma_across^2 instead of the paper's sigma_r^2 (eq. 7). */
