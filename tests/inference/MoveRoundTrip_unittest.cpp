@@ -5,6 +5,7 @@
 #include <whiskermap/inference/moves/LegBirthDeath.h>
 #include <whiskermap/inference/moves/LegRefit.h>
 #include <whiskermap/inference/moves/LegReparent.h>
+#include <whiskermap/inference/moves/MoveRegistry.h>
 #include <whiskermap/inference/moves/ShapeletLink.h>
 #include <whiskermap/inference/moves/SplitMerge.h>
 #include <whiskermap/inference/moves/TableBirthDeath.h>
@@ -13,6 +14,7 @@
 #include "MoveBoards.h"
 
 #include <algorithm>
+#include <limits>
 
 using namespace whiskermap;
 using inference::moves::Proposal;
@@ -206,4 +208,69 @@ TEST(MoveRoundTrip, LogTargetIsTheChangeOfLogJoint)
 	EXPECT_GE(links, 10);
 	EXPECT_GE(legRefits, 10);
 	EXPECT_GE(tableRefits, 5);
+}
+
+namespace
+{
+/** Every hypothesis of the board, its pose and links, and logJoint: equal when nothing changed. */
+std::vector<double> state(const model::Blackboard& bb)
+{
+	std::vector<double> out{model::logJoint(bb)};
+	for (Id t = 0; t < bb.tableIdBound(); t++)
+		if (bb.hasTable(t)) out.insert(out.end(), {double(t), bb.table(t).x, bb.table(t).y, bb.table(t).theta});
+	for (Id l = 0; l < bb.legIdBound(); l++)
+		if (bb.hasLeg(l))
+			out.insert(out.end(), {double(l), bb.leg(l).x, bb.leg(l).y, bb.leg(l).theta, bb.leg(l).wx, double(bb.leg(l).parent)});
+	for (size_t s = 0; s < bb.shapelets().size(); s++) out.push_back(bb.shapeletParent(s));
+	for (Id w = 0; w < bb.wallIdBound(); w++) out.push_back(bb.hasWall(w));
+	return out;
+}
+}  // namespace
+
+// The sampler scores the board at a checkpoint only when a move was accepted since the last
+// score (BlackboardSampler::checkpoint): every registered move, offered to every hypothesis at
+// a finite and at an infinite beta, leaves the board exactly as it was (logJoint to the bit)
+// when it counts no acceptance.
+TEST(MoveRoundTrip, AMoveThatCountsNoAcceptanceLeavesTheBoardAsItWas)
+{
+	int unchanged = 0;
+	for (uint64_t seed = 0; seed < BOARDS; seed++)
+	{
+		model::ModelParams params;
+		params.walls = seed % 3 == 2;
+		MoveBoard b(seed, seed % 2, params);
+		const inference::moves::MoveRegistry registry(b.P);
+		for (const double beta : {1.0, std::numeric_limits<double>::infinity()})
+		{
+			b.ctx.beta = beta;
+			b.ctx.searchPoses = true;
+			for (const inference::moves::MoveEntry& e : registry.entries())
+			{
+				const Id bound = e.target == inference::moves::Target::Table  ? b.bb.tableIdBound()
+								 : e.target == inference::moves::Target::Leg  ? b.bb.legIdBound()
+								 : e.target == inference::moves::Target::Wall ? b.bb.wallIdBound()
+																			  : static_cast<Id>(b.bb.shapelets().size());
+				for (Id id = 0; id < bound; id++)
+				{
+					const bool alive = e.target == inference::moves::Target::Table  ? b.bb.hasTable(id)
+									   : e.target == inference::moves::Target::Leg  ? b.bb.hasLeg(id)
+									   : e.target == inference::moves::Target::Wall ? b.bb.hasWall(id)
+																					: !b.bb.explained(static_cast<size_t>(id));
+					if (!alive) continue;
+					const auto accepted = [&] {
+						uint64_t n = 0;
+						for (const uint32_t a : b.result.accepted) n += a;
+						return n;
+					};
+					const uint64_t acceptedBefore = accepted();
+					const std::vector<double> before = state(b.bb);
+					e.visit(b.ctx, id);
+					if (accepted() != acceptedBefore) continue;
+					EXPECT_EQ(state(b.bb), before) << e.name << " on " << id << ", board " << seed << ", beta " << beta;
+					unchanged++;
+				}
+			}
+		}
+	}
+	EXPECT_GE(unchanged, 1000);
 }

@@ -89,3 +89,38 @@ TEST(Blackboard, CompactRenumbersLinks)
 	EXPECT_EQ(h.legs[0].corner, 1);
 	EXPECT_EQ(h.shapeletParent, std::vector<Id>{0});
 }
+
+// A copy of the board (a move's backup, the sampler's MAP candidate) shares the problem's
+// shapelets; a later reset of either board leaves the other's shapelets as they were.
+TEST(Blackboard, CopiesKeepTheirShapeletsAcrossAReset)
+{
+	ModelParams p;
+	Blackboard a(p);
+	a.reset({{0.5, 0.3, 0, 0.5, 0}, {-0.5, 0.3, 0, 0.5, 1}});
+	Blackboard b = a;
+	EXPECT_EQ(&a.shapelets(), &b.shapelets());  // shared, not copied
+	a.reset({{2, 2, 1, 0.1, 0}});
+	ASSERT_EQ(b.shapelets().size(), 2u);
+	EXPECT_EQ(b.shapelets()[1].x, -0.5);
+	ASSERT_EQ(a.shapelets().size(), 1u);
+	EXPECT_EQ(a.shapelets()[0].x, 2);
+	b = a;
+	EXPECT_EQ(b.shapelets().size(), 1u);
+	EXPECT_EQ(Blackboard(p).shapelets().size(), 0u);
+}
+
+// Legs' folded evidence starts empty in a reused slot after a reset, though reset keeps storage.
+TEST(Blackboard, EvidenceOfAReusedSlotIsTheNewLegs)
+{
+	ModelParams p;
+	Blackboard bb(p);
+	bb.reset({{0.5, 0.3, 0, 0.5, 0}});
+	LegEvidence e;
+	e.add({0.52, 0.3, 0, 0.5, 0}, squareLeg(0.5, 0.3), p);
+	for (int i = 0; i < 5; i++) bb.addLeg(squareLeg(i, 0), e);
+	bb.reset({{0.5, 0.3, 0, 0.5, 0}});
+	const Id l = bb.addLeg(squareLeg(0.5, 0.3));
+	EXPECT_TRUE(bb.evidence(l).empty());
+	const Id m = bb.addLeg(squareLeg(0.7, 0.3), e);
+	EXPECT_EQ(bb.evidence(m).count(), 1u);
+}

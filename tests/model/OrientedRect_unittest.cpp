@@ -2,6 +2,7 @@
 #include <whiskermap/model/OrientedRect.h>
 
 #include <cmath>
+#include <random>
 
 using whiskermap::model::OrientedRect;
 
@@ -70,4 +71,29 @@ TEST(OrientedRect, Overlaps)
 	EXPECT_TRUE(square.overlaps({0.08, 0.08, M_PI_4, 0.05, 0.05}));  // its edge x + y = 0.089
 	// A long thin bar crossing the square with no corner inside it.
 	EXPECT_TRUE(square.overlaps({0, 0, M_PI_2, 1.0, 0.01}));
+}
+
+TEST(OrientedRect, FartherThanRejectsOnlyPointsBeyondTheDistance)
+{
+	// The cheap reject may only say "farther" for points whose exact perimeter distance exceeds
+	// d, and must say it for most points well outside the circumcircle (else it saves nothing).
+	std::mt19937_64 rng(7);
+	std::uniform_real_distribution<double> u(-1, 1);
+	int rejected = 0, far = 0;
+	for (int i = 0; i < 20000; i++)
+	{
+		const OrientedRect r{u(rng), u(rng), 4 * u(rng), 0.01 + 0.2 * std::abs(u(rng)), 0.01 + 0.2 * std::abs(u(rng))};
+		const double x = r.cx + u(rng), y = r.cy + u(rng), d = 0.3 * std::abs(u(rng));
+		const double exact = r.perimeter(x, y).distance;
+		if (r.fartherThan(x, y, d))
+		{
+			EXPECT_GT(exact, d) << i;
+			rejected++;
+		}
+		far += std::hypot(x - r.cx, y - r.cy) > 1.01 * (d + std::hypot(r.hx, r.hy));
+	}
+	EXPECT_GE(rejected, far);
+	EXPECT_GT(far, 5000);
+	// On the circumcircle at distance d exactly: not rejected.
+	EXPECT_FALSE(square.fartherThan(0.05 + 0.1 / std::sqrt(2.0), 0.05 + 0.1 / std::sqrt(2.0), 0.1));
 }

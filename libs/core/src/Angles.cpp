@@ -12,6 +12,7 @@ namespace
 double remainder(double d, double period)
 {
 	double r = std::abs(d);
+	if (r < 2 * period) return std::copysign(r >= period ? r - period : r, d);  // the usual case: the loop's last step
 	if (!(r < 16 * period)) return std::fmod(d, period);
 	for (double m = 8 * period; m >= period; m /= 2)
 		if (r >= m) r -= m;
@@ -19,15 +20,11 @@ double remainder(double d, double period)
 }
 }  // namespace
 
-double angleDiff(double a, double b, double period)
+double wrapDifference(double d, double period)
 {
-	double d = a - b;
-	if (d > -period / 2 && d <= period / 2) return d;  // already in range: what fmod would give
 	d = remainder(d, period);
 	if (d <= -period / 2) d += period;
 	if (d > period / 2) d -= period;
 	return d;
 }
-
-double wrapToPi(double a) { return angleDiff(a, 0.0, 2 * M_PI); }
 }  // namespace whiskermap::core

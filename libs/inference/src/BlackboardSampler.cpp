@@ -32,6 +32,7 @@ StepResult BlackboardSampler::step(
 	int snapshotTemperature)
 {
 	m_bb.reset(shapelets, swept);
+	m_scoredAfter = NOT_SCORED;
 	StepResult result;
 	run(result, seed, snapshotTemperature);
 	return result;
@@ -40,6 +41,7 @@ StepResult BlackboardSampler::step(
 StepResult BlackboardSampler::anneal(const model::Blackboard& start, uint64_t seed, int snapshotTemperature)
 {
 	m_bb = start;
+	m_scoredAfter = NOT_SCORED;
 	StepResult result;
 	m_ctx.result = &result;
 	m_rng.seed(seed);
@@ -118,6 +120,10 @@ void BlackboardSampler::associate()
 
 void BlackboardSampler::checkpoint(StepResult& result)
 {
+	uint64_t accepted = 0;
+	for (const uint32_t a : result.accepted) accepted += a;
+	if (accepted == m_scoredAfter) return;  // the board scored last time, unchanged
+	m_scoredAfter = accepted;
 	const double lp = model::logJoint(m_bb);
 	if (lp <= result.logPosterior) return;
 	result.logPosterior = lp;
@@ -169,8 +175,10 @@ void BlackboardSampler::visit(moves::Target target, Id id)
 }
 
 // Keep only what explains a shapelet directly or shares an ancestor with something that does.
+// A removal changes the board without a move: the next checkpoint scores it.
 void BlackboardSampler::prune()
 {
+	const size_t before = m_bb.legCount() + m_bb.tableCount() + m_bb.wallCount();
 	m_legSupported.assign(static_cast<size_t>(m_bb.legIdBound()), 0);
 	m_tableSupported.assign(static_cast<size_t>(m_bb.tableIdBound()), 0);
 	for (Id l = 0; l < m_bb.legIdBound(); l++)
@@ -188,6 +196,7 @@ void BlackboardSampler::prune()
 		if (m_bb.hasTable(t) && !m_tableSupported[t]) m_bb.removeTable(t);
 	for (Id w = 0; w < m_bb.wallIdBound(); w++)
 		if (m_bb.hasWall(w) && !m_bb.wallExplains(w)) m_bb.removeWall(w);
+	if (m_bb.legCount() + m_bb.tableCount() + m_bb.wallCount() != before) m_scoredAfter = NOT_SCORED;
 }
 
 // The wall whose link gain for unexplained shapelet s (eq. 22 against the null cause) beats

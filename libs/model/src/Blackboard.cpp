@@ -15,6 +15,7 @@ double legCell(const ModelParams& p) { return std::max(4 * p.leg_width, p.maxLen
 
 Blackboard::Blackboard(const ModelParams& p)
 	: m_p(p),
+	  m_shapelets(std::make_shared<const std::vector<obs::Shapelet>>()),
 	  m_tableHash(p.maxDiagonal()),
 	  m_legHash(legCell(p)),
 	  m_contextTableHash(p.maxDiagonal()),
@@ -24,14 +25,16 @@ Blackboard::Blackboard(const ModelParams& p)
 
 void Blackboard::reset(const std::vector<obs::Shapelet>& shapelets)
 {
-	m_shapelets.assign(shapelets.begin(), shapelets.end());
+	m_shapelets = std::make_shared<const std::vector<obs::Shapelet>>(shapelets);
 	m_shapeletParent.assign(shapelets.size(), NONE);
 	m_shapeletWall.assign(shapelets.size(), NONE);
 	m_walls.clear();
 	m_tables.clear();
 	m_legs.clear();
-	// Per-id side tables (children, evidence, dormancy) keep their storage: add*() resets an
-	// id's entries when its slot is used again.
+	// Per-id side tables (children, dormancy) keep their storage: add*() resets an id's entries
+	// when its slot is used again. The legs' evidence is emptied (its storage kept): a copy of
+	// the board copies it whole, and a large earlier board would leave every later copy large.
+	m_evidence.clear();
 	m_contextTables.clear();
 	m_contextLegs.clear();
 	m_tableHash.clear();
@@ -52,7 +55,8 @@ void Blackboard::grow()
 {
 	const auto nt = static_cast<size_t>(m_tables.capacity()), nl = static_cast<size_t>(m_legs.capacity());
 	if (m_tableLegs.size() < nt) m_tableLegs.resize(nt), m_tableDormant.resize(nt, 0);
-	if (m_legShapelets.size() < nl) m_legShapelets.resize(nl), m_legDormant.resize(nl, 0), m_evidence.resize(nl);
+	if (m_legShapelets.size() < nl) m_legShapelets.resize(nl), m_legDormant.resize(nl, 0);
+	if (m_evidence.size() < nl) m_evidence.resize(nl);
 }
 
 void Blackboard::insertSorted(std::vector<Id>& v, Id id) { v.insert(std::upper_bound(v.begin(), v.end(), id), id); }

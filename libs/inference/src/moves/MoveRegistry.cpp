@@ -89,6 +89,7 @@ struct LegChild
 		candidates.clear();
 		for (size_t s = 0; s < bb.shapelets().size(); s++)
 			if (bb.shapeletParent(s) != l && bb.shapeletWall(s) == model::NONE &&
+				!r.fartherThan(bb.shapelets()[s].x, bb.shapelets()[s].y, ctx.mp.parent_gate) &&
 				r.perimeter(bb.shapelets()[s].x, bb.shapelets()[s].y).distance <= ctx.mp.parent_gate)
 				candidates.push_back(static_cast<Id>(s));
 		if (candidates.empty()) return;

@@ -2,12 +2,22 @@
 
 namespace whiskermap::core
 {
-/** Wraps an angle into (-pi, pi]. */
-double wrapToPi(double a);
+/** angleDiff for a difference d = a - b outside (-period/2, period/2]: the out-of-line part. */
+double wrapDifference(double d, double period);
 
 /** Smallest signed difference a - b, taken modulo `period` (2*pi for plain angles,
- *  pi for an object with 180 degree symmetry, pi/2 for a square), in (-period/2, period/2]. */
-double angleDiff(double a, double b, double period);
+ *  pi for an object with 180 degree symmetry, pi/2 for a square), in (-period/2, period/2].
+ *  Inline: the fits evaluate it tens of thousands of times per insertion, nearly always
+ *  in range already (doc/benchmarks.md, "Lasting map"). */
+inline double angleDiff(double a, double b, double period)
+{
+	const double d = a - b;
+	if (d > -period / 2 && d <= period / 2) return d;  // already in range: what fmod would give
+	return wrapDifference(d, period);
+}
+
+/** Wraps an angle into (-pi, pi]. */
+inline double wrapToPi(double a) { return angleDiff(a, 0.0, 6.283185307179586); }  // 2 pi, as M_PI * 2 rounds
 
 /** Degrees to radians and back. */
 constexpr double deg2rad(double d) { return d * 0.017453292519943295; }

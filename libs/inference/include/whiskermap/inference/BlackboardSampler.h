@@ -55,7 +55,11 @@ class BlackboardSampler
 	void sweep(double beta);
 	/** Offers the moves of `target` to hypothesis `id` (one draw u for all of them). */
 	void visit(moves::Target target, model::Id id);
-	/** If the board beats the best so far, it becomes the MAP candidate. */
+	/** If the board beats the best so far, it becomes the MAP candidate. The board is scored
+	 *  (eq. 20, the whole board) only when a move was accepted, or the prune removed something,
+	 *  since it was last scored: rejected moves leave it exactly as it was
+	 *  (MoveRoundTrip.AMoveThatCountsNoAcceptanceLeavesTheBoardAsItWas), so its score and the
+	 *  verdict are unchanged. */
 	void checkpoint(StepResult& result);
 	void prune();
 	model::Id bestWallFor(size_t s, double& gain) const;
@@ -71,6 +75,8 @@ class BlackboardSampler
 	// Scratch, reused across calls (no per-move heap churn once warm).
 	std::vector<model::Id> m_tableOrder, m_legOrder, m_wallOrder, m_candidates;
 	model::Blackboard m_best;  ///< the best board at the coldest temperature (the MAP)
+	uint64_t m_scoredAfter = NOT_SCORED;  ///< accepted moves when checkpoint last scored the board (NOT_SCORED: score it next time)
+	static constexpr uint64_t NOT_SCORED = ~uint64_t{0};
 	std::vector<uint8_t> m_legSupported, m_tableSupported;
 };
 }  // namespace whiskermap::inference

@@ -10,6 +10,7 @@
 #include <whiskermap/model/WallEvidence.h>
 #include <whiskermap/obs/Shapelet.h>
 
+#include <memory>
 #include <vector>
 
 namespace whiskermap::model
@@ -105,7 +106,7 @@ class Blackboard
 	size_t tableCount() const { return m_tables.count(); }
 	size_t legCount() const { return m_legs.count(); }
 
-	const std::vector<obs::Shapelet>& shapelets() const { return m_shapelets; }
+	const std::vector<obs::Shapelet>& shapelets() const { return *m_shapelets; }
 	/** The problem's swept free space (negative evidence, eq. 21); empty unless given. */
 	const SweptSpace& swept() const { return m_swept; }
 	Id shapeletParent(size_t i) const { return m_shapeletParent[i]; }
@@ -156,7 +157,8 @@ class Blackboard
 	void grow();
 
 	ModelParams m_p;
-	std::vector<obs::Shapelet> m_shapelets;
+	/** Set by reset() only, so copies of the board (a move's backup, the MAP candidate) share it. */
+	std::shared_ptr<const std::vector<obs::Shapelet>> m_shapelets;
 	std::vector<Id> m_shapeletParent;
 	SlotVector<Table> m_tables;
 	SlotVector<Leg> m_legs;

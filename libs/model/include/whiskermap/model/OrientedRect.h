@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 
 namespace whiskermap::model
 {
@@ -16,6 +17,14 @@ struct OrientedRect
 		double faceNormal;  ///< outward normal angle of the nearest face, in (-pi, pi]
 	};
 	PerimeterHit perimeter(double x, double y) const;
+	/** True only when the point lies further than `d` from the perimeter: its centre is further
+	 *  than d plus the half-diagonal (with a relative margin of 1e-9 for rounding). A cheap
+	 *  reject before perimeter(); false says nothing. */
+	bool fartherThan(double x, double y, double d) const
+	{
+		const double dx = x - cx, dy = y - cy, reach = d + std::sqrt(hx * hx + hy * hy);
+		return dx * dx + dy * dy > reach * reach * (1 + 1e-9);
+	}
 
 	/** Exact distance from a point to face k (the side whose outward normal is
 	 *  theta + k pi/2), a segment: 0, 2 across the x axis; 1, 3 across the y axis. */
