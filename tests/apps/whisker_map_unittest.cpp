@@ -147,23 +147,26 @@ TEST(WhiskerMap, OfficeWithTheObjectCatalogueAboveItsFloors)
 TEST(WhiskerMap, RegressionFloorsOnTheShippedDatasets)
 {
 	// whisker-map (seed 1) on each shipped dataset, evaluated against the paper arena, in
-	// both modes: map_tables.csv scored as written may not lose F1, nor its centre error
-	// grow, past the figures measured on 2026-11-28 with a stated margin (doc/results.md).
-	//   lasting map:  dataset     F1 (floor)   RMSE m (ceiling)
-	//                 noiseless   1.00 (1.00)  0.0002 (0.0010)
-	//                 default     1.00 (1.00)  0.0006 (0.0020)
-	//                 very-noisy  1.00 (1.00)  0.0035 (0.0080)
-	//   per-pose mode: the paper's; the same floors as before the lasting map (F1 0.90 lets
-	//   one table go spurious, not one go missing as well), and per-pose local F1 >= 0.08.
+	// both modes: map_tables.csv scored as written may not lose F1, nor its centre or yaw
+	// error grow, past the figures measured on 2026-12-01 with a stated margin (doc/results.md;
+	// the lasting map's reported pose and very-noisy revisions, issue 7).
+	//   lasting map:  dataset     F1 (floor)   RMSE m (ceiling)    yaw deg (ceiling)
+	//                 noiseless   1.00 (1.00)  0.00000 (0.0005)    0.0001 (0.01)
+	//                 default     1.00 (1.00)  0.00030 (0.0008)    0.020 (0.06)
+	//                 very-noisy  1.00 (1.00)  0.00136 (0.0035)    0.092 (0.25)
+	//   per-pose mode: the paper's; the same F1 and RMSE floors as before the lasting map (F1
+	//   0.90 lets one table go spurious, not one go missing as well), per-pose local F1 >= 0.08,
+	//   and yaw ceilings at about 3x the 2026-12-01 figures (0.12, 0.35, 0.90 deg).
 	struct Floor
 	{
 		const char* mode;
 		const char* dataset;
-		double f1, rmse, localF1;
+		double f1, rmse, yaw, localF1;
 	};
-	for (const Floor& f : {Floor{"lasting", "noiseless", 1.0, 0.0010, -1}, Floor{"lasting", "default", 1.0, 0.0020, -1},
-						   Floor{"lasting", "very-noisy", 1.0, 0.0080, -1}, Floor{"per_pose", "noiseless", 0.90, 0.0090, 0.08},
-						   Floor{"per_pose", "default", 0.90, 0.0110, 0.08}, Floor{"per_pose", "very-noisy", 0.90, 0.0250, 0.08}})
+	for (const Floor& f :
+		 {Floor{"lasting", "noiseless", 1.0, 0.0005, 0.01, -1}, Floor{"lasting", "default", 1.0, 0.0008, 0.06, -1},
+		  Floor{"lasting", "very-noisy", 1.0, 0.0035, 0.25, -1}, Floor{"per_pose", "noiseless", 0.90, 0.0090, 0.4, 0.08},
+		  Floor{"per_pose", "default", 0.90, 0.0110, 1.0, 0.08}, Floor{"per_pose", "very-noisy", 0.90, 0.0250, 2.5, 0.08}})
 	{
 		const std::string what = std::string(f.mode) + " " + f.dataset;
 		const auto out = (fs::temp_directory_path() / (std::string("whiskermap_floor_") + f.mode + f.dataset)).string();
@@ -174,6 +177,7 @@ TEST(WhiskerMap, RegressionFloorsOnTheShippedDatasets)
 		const std::string metrics = slurp(out + "/metrics.json");
 		EXPECT_GE(jsonNumber(metrics, "f1"), f.f1) << what;
 		EXPECT_LE(jsonNumber(metrics, "rmse_m"), f.rmse) << what;
+		EXPECT_LE(jsonNumber(metrics, "yaw_err_deg"), f.yaw) << what;
 		if (f.localF1 >= 0)
 		{
 			const std::string local = metrics.substr(metrics.find("\"local\""));

@@ -109,7 +109,7 @@ model::Table fitTable(
 	model::Table origin = start;  // corner offsets in the table frame
 	origin.x = origin.y = origin.theta = 0;
 	double ox[4], oy[4], mox = 0, moy = 0, mqx = 0, mqy = 0;
-	for (int c = 0; c < 4; c++) model::tableCorner(origin, c, p, ox[c], oy[c]);
+	model::tableCorners(origin, p, ox, oy);
 	for (size_t i = 0; i < n; i++)
 		mox += ox[corners[i]], moy += oy[corners[i]], mqx += legs[i]->x, mqy += legs[i]->y;
 	mox /= n, moy /= n, mqx /= n, mqy /= n;

@@ -52,8 +52,10 @@ void tablesForPairs(const model::Blackboard& bb, Id l, int cls, std::vector<Tabl
 	const double gate = p.parent_gate, diagonal = std::hypot(p.lengthOf(cls), p.widthOf(cls));
 	Table frame = tableWithLegAt(p, bb.leg(l), 0, 0, cls);
 	frame.x = frame.y = frame.theta = 0;
-	double cx[4], cy[4];
+	double cx[4], cy[4], cornerDistance[2][4];
 	model::tableCorners(frame, p, cx, cy);
+	for (int a = 0; a < 2; a++)
+		for (int b = 0; b < 4; b++) cornerDistance[a][b] = std::hypot(cx[a] - cx[b], cy[a] - cy[b]);
 	bb.forEachLegNear(bb.leg(l).x, bb.leg(l).y, diagonal + 2 * gate, [&](Id o) {
 		// A partner whose texture is more than 5 sigma from the table's costs it over 25 nats
 		// (eq. 6): not worth proposing.
@@ -66,7 +68,7 @@ void tablesForPairs(const model::Blackboard& bb, Id l, int cls, std::vector<Tabl
 			for (int b = 0; b < 4; b++)
 			{
 				const int corners[2] = {a, b};
-				if (b != a && std::abs(std::hypot(cx[a] - cx[b], cy[a] - cy[b]) - d) <= 2 * gate)
+				if (b != a && std::abs(cornerDistance[a][b] - d) <= 2 * gate)
 					out.push_back(fitTable(p, frame, pair, corners, 2));
 			}
 	});

@@ -41,10 +41,11 @@ void tableCorner(const Table& t, int i, const ModelParams& p, double& x, double&
 void tableCorners(const Table& t, const ModelParams& p, double x[4], double y[4])
 {
 	const auto [s, c] = core::cachedSinCos(t.theta);
+	const double hl = 0.5 * p.lengthOf(t.cls), hw = 0.5 * p.widthOf(t.cls);  // -0.5 * v is -(0.5 * v) exactly
 	for (int i = 0; i < 4; i++)
 	{
-		const double lx = (i == 0 || i == 3 ? 0.5 : -0.5) * p.lengthOf(t.cls);
-		const double ly = (i < 2 ? 0.5 : -0.5) * p.widthOf(t.cls);
+		const double lx = i == 0 || i == 3 ? hl : -hl;
+		const double ly = i < 2 ? hw : -hw;
 		x[i] = t.x + c * lx - s * ly;
 		y[i] = t.y + s * lx + c * ly;
 	}

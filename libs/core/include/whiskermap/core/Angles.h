@@ -1,8 +1,10 @@
 #pragma once
+#include <cmath>
 
 namespace whiskermap::core
 {
-/** angleDiff for a difference d = a - b outside (-period/2, period/2]: the out-of-line part. */
+/** angleDiff for a difference d = a - b outside (-period/2, period/2]: the out-of-line part
+ *  (angleDiff itself handles differences under two periods, the usual case, the same way). */
 double wrapDifference(double d, double period);
 
 /** Smallest signed difference a - b, taken modulo `period` (2*pi for plain angles,
@@ -11,9 +13,14 @@ double wrapDifference(double d, double period);
  *  in range already (doc/benchmarks.md, "Lasting map"). */
 inline double angleDiff(double a, double b, double period)
 {
-	const double d = a - b;
+	double d = a - b;
 	if (d > -period / 2 && d <= period / 2) return d;  // already in range: what fmod would give
-	return wrapDifference(d, period);
+	const double r = std::abs(d);
+	if (!(r < 2 * period)) return wrapDifference(d, period);
+	d = std::copysign(r >= period ? r - period : r, d);  // fmod's exact remainder (Sterbenz), as wrapDifference
+	if (d <= -period / 2) d += period;
+	if (d > period / 2) d -= period;
+	return d;
 }
 
 /** Wraps an angle into (-pi, pi]. */
