@@ -21,7 +21,7 @@ done
 for f in map_tables.csv map_candidates.csv; do
   [[ "$(head -1 "$work/a/$f")" == "$header" ]] || { echo "FAIL: $f header"; exit 1; }
 done
-for key in '"mode": "lasting"' '"poses": 400' '"local_problem":' '"state":' '"map_tables":' '"moves":' '"time_per_pose_ms":' '"median":' '"p95":'; do
+for key in '"mode": "lasting"' '"poses": 400' '"local_problem":' '"state":' '"map_tables":' '"moves":' '"move_types":' '"table for leg": {' '"acceptance_rate":' '"time_per_pose_ms":' '"median":' '"p95":'; do
   grep -q -- "$key" "$work/a/summary.json" || { echo "FAIL: summary.json lacks $key"; cat "$work/a/summary.json"; exit 1; }
 done
 [[ -z "$(ls -A "$work/a" | grep staging || true)" ]] || { echo "FAIL: staging folder left"; exit 1; }

@@ -275,6 +275,13 @@ TEST(CHierarchicalObjectMap, SerializationRoundTripThroughCMultiMetricMap)
 	EXPECT_EQ(b->shapelets().back().shaft_y, m.map->shapelets().back().shaft_y);
 	EXPECT_EQ(b->modelParams, m.map->modelParams);
 	EXPECT_EQ(b->proposed(), m.map->proposed());
+	ASSERT_EQ(b->moveTypes().size(), m.map->moveTypes().size());  // version 7
+	for (size_t k = 0; k < b->moveTypes().size(); k++)
+	{
+		EXPECT_EQ(b->moveTypes()[k].name, m.map->moveTypes()[k].name);
+		EXPECT_EQ(b->moveTypes()[k].proposed, m.map->moveTypes()[k].proposed);
+		EXPECT_EQ(b->moveTypes()[k].accepted, m.map->moveTypes()[k].accepted);
+	}
 	EXPECT_EQ(b->asString(), m.map->asString());
 	// The reloaded map scores sweeps exactly as the original.
 	const auto& s = m.rawlog.sweeps[200];

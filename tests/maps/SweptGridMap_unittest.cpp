@@ -112,12 +112,16 @@ TEST(SweptGridMap, VersionFourStreamsLoadWithoutTheGrid)
 	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
 	ASSERT_EQ(bytes[0], static_cast<uint8_t>(name.size() | 0x80));
 	ASSERT_EQ(std::string(bytes.begin() + 1, bytes.begin() + 1 + static_cast<long>(name.size())), name);
-	ASSERT_EQ(bytes[1 + name.size()], 6);
+	ASSERT_EQ(bytes[1 + name.size()], 7);
 	bytes[1 + name.size()] = 4;
 	// version 5's tail: swept_cell, free_space, cell_prior, cell_prior_sweeps, p_unexplored,
 	// the grid's cell edge and count, 12 bytes a cell; version 6's sigma_corner,
-	// noisy_revisions and revision round robin's insertion number; then MRPT's end flag
-	const size_t tail = 8 + 1 + 8 + 8 + 8 + 8 + 4 + 12 * a.sweptGrid().cells().size() + 8 + 4 + 8;
+	// noisy_revisions and revision round robin's insertion number; version 7's move types
+	// (a count, then per type a length byte, the name and two 8-byte counts); then MRPT's end flag
+	size_t moveTypes = 4;
+	for (const auto& t : a.moveTypes()) moveTypes += 1 + t.name.size() + 8 + 8;
+	ASSERT_GT(a.moveTypes().size(), 5u);
+	const size_t tail = 8 + 1 + 8 + 8 + 8 + 8 + 4 + 12 * a.sweptGrid().cells().size() + 8 + 4 + 8 + moveTypes;
 	bytes.erase(bytes.end() - 1 - static_cast<long>(tail), bytes.end() - 1);
 	const auto old = read(bytes);
 	ASSERT_TRUE(old);
@@ -154,4 +158,44 @@ TEST(SweptGridMap, OptionsAreReadStrictly)
 	EXPECT_THROW(load("use_swept_grid=maybe\n", ""), core::Error);
 	EXPECT_THROW(load("", "swept_cell=0\n"), core::Error);
 	std::filesystem::remove(path);
+}
+
+// Version 7's counts per move type: they add up to the counts per kind of move, survive a
+// round trip, and a corrupt count (more types than any registry holds, or more acceptances
+// than proposals) is refused with an error, not an allocation.
+TEST(SweptGridMap, MoveTypeCountsAddUpAndAreReadStrictly)
+{
+	for (const bool perPose : {false, true})
+	{
+		CHierarchicalObjectMap a;
+		if (perPose) a.insertionOptions.mode = CHierarchicalObjectMap::TInsertionOptions::TMode::PerPose;
+		insert(a, 0, 60);
+		uint64_t proposed = 0, accepted = 0, byType = 0, acceptedByType = 0;
+		for (size_t k = 0; k < inference::MOVE_COUNT; k++) proposed += a.proposed()[k], accepted += a.accepted()[k];
+		for (const auto& t : a.moveTypes()) byType += t.proposed, acceptedByType += t.accepted;
+		EXPECT_GT(proposed, 100u);
+		EXPECT_EQ(byType, proposed) << perPose;
+		EXPECT_EQ(acceptedByType, accepted) << perPose;
+		ASSERT_FALSE(a.moveTypes().empty());
+		EXPECT_EQ(a.moveTypes().front().name, "priming");
+		const auto back = read(bytesOf(a));
+		ASSERT_TRUE(back);
+		ASSERT_EQ(back->moveTypes().size(), a.moveTypes().size());
+		EXPECT_EQ(back->moveTypes().back().name, a.moveTypes().back().name);
+		EXPECT_EQ(back->moveTypes().back().accepted, a.moveTypes().back().accepted);
+	}
+	CHierarchicalObjectMap a;
+	insert(a, 0, 30);
+	size_t section = 4;
+	for (const auto& t : a.moveTypes()) section += 1 + t.name.size() + 8 + 8;
+	const std::vector<uint8_t> good = bytesOf(a);
+	const size_t at = good.size() - 1 - section;  // the section's type count, before MRPT's end flag
+	std::vector<uint8_t> bad = good;
+	bad[at] = 65, bad[at + 1] = bad[at + 2] = bad[at + 3] = 0;  // little-endian 65
+	EXPECT_THROW(read(bad), std::exception);
+	bad = good;
+	const size_t lastAccepted = good.size() - 1 - 8;
+	bad[lastAccepted + 7] = 0x7f;  // the last type's acceptances far above its proposals
+	EXPECT_THROW(read(bad), std::exception);
+	EXPECT_TRUE(read(good));
 }

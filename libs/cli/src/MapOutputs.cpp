@@ -279,6 +279,12 @@ void MapOutputs::writeSummary(
 	auto& moves = j["moves"] = nlohmann::ordered_json::object();
 	for (size_t k = 0; k < inference::MOVE_COUNT; k++)
 		moves[MOVE_NAMES[k]] = {{"proposed", m_map.proposed()[k]}, {"accepted", m_map.accepted()[k]}};
+	// The same per move type (the sampler's MoveRegistry lines), with the acceptance rate.
+	auto& types = j["move_types"] = nlohmann::ordered_json::object();
+	for (const inference::MoveTally& t : m_map.moveTypes())
+		types[t.name] = {
+			{"proposed", t.proposed}, {"accepted", t.accepted},
+			{"acceptance_rate", fixed(t.proposed ? double(t.accepted) / double(t.proposed) : 0.0, 4)}};
 	j["time_per_pose_ms"] = {{"median", fixed(percentile(m_ms.items(), 0.5), 4)}, {"p95", fixed(percentile(m_ms.items(), 0.95), 4)}};
 	j["proposals_per_second"] = std::round(m_totalMs > 0 ? proposals / (m_totalMs / 1000) : 0.0);
 	j["wall_time_s"] = fixed(wallSeconds, 3);

@@ -55,6 +55,8 @@ StepResult BlackboardSampler::anneal(const model::Blackboard& start, uint64_t se
 void BlackboardSampler::run(StepResult& result, uint64_t seed, int snapshotTemperature)
 {
 	m_ctx.result = &result;
+	result.moveTypes.clear();
+	for (const moves::MoveEntry& e : m_moves.entries()) result.moveTypes.push_back({e.name, 0, 0});
 	m_rng.seed(seed);
 	const auto& betas = m_params.schedule.betas();
 	for (size_t k = 0; k < betas.size(); k++)
@@ -79,6 +81,7 @@ void BlackboardSampler::run(StepResult& result, uint64_t seed, int snapshotTempe
 	m_ctx.searchPoses = false;
 	result.map = m_best.compact();
 	m_ctx.result = nullptr;
+	m_ctx.entry = moves::MoveContext::NO_ENTRY;
 }
 
 // Data association first: each shapelet without a leg takes the best of linking to a nearby
@@ -136,8 +139,12 @@ void BlackboardSampler::sweep(double beta)
 {
 	m_ctx.beta = beta;
 	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
-		for (const moves::MoveEntry& e : m_moves.entries())
+		for (size_t k = 0; k < m_moves.entries().size(); k++)
+		{
+			const moves::MoveEntry& e = m_moves.entries()[k];
+			m_ctx.entry = k;
 			if (e.target == moves::Target::Shapelet && !m_bb.explained(s)) e.visit(m_ctx, static_cast<Id>(s));
+		}
 
 	m_tableOrder.clear();
 	m_legOrder.clear();
@@ -165,9 +172,11 @@ void BlackboardSampler::visit(moves::Target target, Id id)
 											   : m_bb.hasWall(id);
 	};
 	const double u = m_rng.uniform();
-	for (const moves::MoveEntry& e : m_moves.entries())
+	for (size_t k = 0; k < m_moves.entries().size(); k++)
 	{
+		const moves::MoveEntry& e = m_moves.entries()[k];
 		if (e.target != target) continue;
+		m_ctx.entry = k;
 		const int offers = m_ctx.greedy() ? e.polishRepeats : 1;
 		for (int i = 0; i < offers && alive(); i++)
 			if (e.offered(m_ctx, u)) e.visit(m_ctx, id);

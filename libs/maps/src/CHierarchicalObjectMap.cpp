@@ -168,6 +168,7 @@ void CHierarchicalObjectMap::internal_clear()
 	m_memory = inference::ShapeletMemory(insertionOptions.memory_size);
 	m_sweptMemory = inference::SweptMemory(insertionOptions.memory_size);
 	m_proposed.fill(0);
+	m_moveTypes.clear();
 	m_accepted.fill(0);
 	m_lastStep = {};
 	m_lastRecord = {};
@@ -217,6 +218,7 @@ void CHierarchicalObjectMap::insertLasting(const obs::CObservationWhiskerContact
 	m_lastLasting = m_lasting.insert(in.shapelets, in.model, samplerParams, in.seed);
 	for (size_t k = 0; k < inference::MOVE_COUNT; k++)
 		m_proposed[k] += m_lastLasting.proposed[k], m_accepted[k] += m_lastLasting.accepted[k];
+	inference::addTallies(m_moveTypes, m_lastLasting.moveTypes);
 	if (insertionOptions.keep_history)
 	{
 		m_shapelets.insert(m_shapelets.end(), in.shapelets.begin(), in.shapelets.end());
@@ -256,6 +258,7 @@ void CHierarchicalObjectMap::integrateStep(TStepInput in, inference::StepResult 
 {
 	for (size_t k = 0; k < inference::MOVE_COUNT; k++)
 		m_proposed[k] += result.proposed[k], m_accepted[k] += result.accepted[k];
+	inference::addTallies(m_moveTypes, result.moveTypes);
 	TPoseRecord rec;
 	rec.pose = in.pose;
 	rec.logPosterior = result.logPosterior;

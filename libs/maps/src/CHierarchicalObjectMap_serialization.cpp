@@ -3,11 +3,12 @@
 // without a known shaft; versions before 3 with the lasting tables reported at their own poses;
 // versions before 4 without walls (walls = false); versions before 5 with an empty swept grid
 // (the likelihood then knows no free space); versions before 6 with sigma_corner = sigma_r and
-// no revisions.
+// no revisions; versions before 7 without the counts per move type.
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/model/ObjectCatalogue.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -145,6 +146,35 @@ void writeClasses(CArchive& out, const model::ModelParams& m, const model::Lasti
 		if (s.hasTable(t)) out.WriteAs<int32_t>(s.table(t).cls);
 }
 
+/** Version 7: the proposal and acceptance counts per move type; each name at most 255 bytes
+ *  (a length byte), at most MAX_MOVE_TYPES of them. */
+constexpr uint32_t MAX_MOVE_TYPES = 64;
+void writeMoveTypes(CArchive& out, const std::vector<inference::MoveTally>& tallies)
+{
+	out.WriteAs<uint32_t>(static_cast<uint32_t>(tallies.size()));
+	for (const auto& t : tallies)
+	{
+		const auto n = static_cast<uint8_t>(std::min<size_t>(t.name.size(), 255));
+		out.WriteAs<uint8_t>(n);
+		out.WriteBuffer(t.name.data(), n);
+		out << t.proposed << t.accepted;
+	}
+}
+
+void readMoveTypes(CArchive& in, std::vector<inference::MoveTally>& tallies)
+{
+	const auto n = in.ReadAs<uint32_t>();
+	if (n > MAX_MOVE_TYPES) THROW_EXCEPTION("CHierarchicalObjectMap: corrupt stream (too many move types)");
+	tallies.resize(n);
+	for (auto& t : tallies)
+	{
+		t.name.resize(in.ReadAs<uint8_t>());
+		in.ReadBuffer(t.name.data(), t.name.size());  // throws at the end of the stream
+		in >> t.proposed >> t.accepted;
+		if (t.accepted > t.proposed) THROW_EXCEPTION("CHierarchicalObjectMap: corrupt stream (more acceptances than proposals)");
+	}
+}
+
 /** Version 4: the wall keys of the model and the lasting map's walls. */
 void writeWalls(CArchive& out, const model::ModelParams& m, const model::LastingState& s)
 {
@@ -214,7 +244,7 @@ void readSwept(CArchive& in, model::SweptGrid& g)
 }
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 6; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 7; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -268,6 +298,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	writeSwept(out, m_sweptGrid);
 	// Version 6: eq. 6's own position noise, the lasting map's revisions.
 	out << m.sigma_corner << l.noisy_revisions << m_lasting.reviseSeq();
+	// Version 7: the counts per move type.
+	writeMoveTypes(out, m_moveTypes);
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -281,6 +313,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 4:
 		case 5:
 		case 6:
+		case 7:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -361,6 +394,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 					THROW_EXCEPTION("CHierarchicalObjectMap: corrupt options (noisy_revisions above 1000)");
 				m_lasting.setReviseSeq(in.ReadAs<uint64_t>());  // any value is valid (a round robin's start)
 			}
+			if (version >= 7) readMoveTypes(in, m_moveTypes);  // older streams: none (internal_clear above)
 			if (!(m.sigma_corner > 0) || !std::isfinite(m.sigma_corner))
 				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt model (sigma_corner not a positive number)");
 			m_consolidator.setObjects(std::move(objs));

@@ -191,6 +191,7 @@ LastingMap::TStats LastingMap::solve(
 	stats.boardContacts = static_cast<uint32_t>(board.shapelets().size());
 	stats.proposed = result.proposed;
 	stats.accepted = result.accepted;
+	stats.moveTypes = result.moveTypes;
 	stats.changed = true;
 	stats.initialLogPosterior = result.initialLogPosterior;
 	stats.logPosterior = result.logPosterior;

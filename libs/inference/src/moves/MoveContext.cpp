@@ -38,6 +38,11 @@ void MoveContext::count(Move m, bool accepted)
 	const auto i = static_cast<size_t>(m);
 	result->proposed[i]++;
 	result->accepted[i] += accepted;
+	if (entry < result->moveTypes.size())
+	{
+		result->moveTypes[entry].proposed++;
+		result->moveTypes[entry].accepted += accepted;
+	}
 }
 
 // The contact lies on the leg's face with outward normal theta_S: the centre is half a leg

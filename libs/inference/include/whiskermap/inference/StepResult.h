@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace whiskermap::inference
 {
@@ -20,6 +22,16 @@ enum class Move : uint8_t
 };
 constexpr size_t MOVE_COUNT = 6;
 
+/** Proposals and acceptances of one move type (a line of the sampler's MoveRegistry). */
+struct MoveTally
+{
+	std::string name;  ///< the registry's name ("table for leg", "leg refit", ...)
+	uint64_t proposed = 0, accepted = 0;
+};
+
+/** Adds `from`'s tallies to `into`'s by name (appending names `into` lacks, in `from`'s order). */
+void addTallies(std::vector<MoveTally>& into, const std::vector<MoveTally>& from);
+
 /** What one time step of the sampler found. */
 struct StepResult
 {
@@ -32,6 +44,8 @@ struct StepResult
 
 	std::array<uint32_t, MOVE_COUNT> proposed{};  ///< indexed by Move
 	std::array<uint32_t, MOVE_COUNT> accepted{};
+	/** The same counts per move type, in the registry's order (doc/sampler.md, "Moves"). */
+	std::vector<MoveTally> moveTypes;
 	/** The blackboard after the requested temperature index (figs. 1-2), if asked for. */
 	std::optional<model::HypothesisSet> snapshot;
 

@@ -133,6 +133,8 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	const std::vector<obs::Shapelet>& shapelets() const { return m_shapelets; }
 	/** Totals over all steps of proposals and acceptances per move type. */
 	const std::array<uint64_t, inference::MOVE_COUNT>& proposed() const { return m_proposed; }
+	/** The same counts per move type (the sampler's MoveRegistry lines), summed over the run. */
+	const std::vector<inference::MoveTally>& moveTypes() const { return m_moveTypes; }
 	const std::array<uint64_t, inference::MOVE_COUNT>& accepted() const { return m_accepted; }
 
 	/** Per-pose mode: the last step's full result (MAP blackboard, snapshot if asked for). */
@@ -184,6 +186,7 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	 *  map starts it empty). */
 	inference::SweptMemory m_sweptMemory;
 	std::array<uint64_t, inference::MOVE_COUNT> m_proposed{}, m_accepted{};
+	std::vector<inference::MoveTally> m_moveTypes;
 	inference::StepResult m_lastStep;
 	TPoseRecord m_lastRecord;
 	TStepInput m_lastInput;

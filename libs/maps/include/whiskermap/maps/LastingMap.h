@@ -66,6 +66,7 @@ class LastingMap
 	{
 		uint32_t visited = 0, boardHypotheses = 0, boardContacts = 0;
 		std::array<uint32_t, inference::MOVE_COUNT> proposed{}, accepted{};
+		std::vector<inference::MoveTally> moveTypes;  ///< the same per move type
 		bool changed = false;  ///< the state was written (the sweep had contacts)
 		uint32_t revisions = 0;  ///< older regions revised after the insertion (noisy_revisions)
 		double initialLogPosterior = 0, logPosterior = 0;  ///< local problem: associated, annealed

@@ -33,6 +33,9 @@ class MoveContext
 	double beta = 1;  ///< inverse temperature; inf: the greedy polish
 	bool searchPoses = false;  ///< the polish's last sweep also searches leg poses
 	StepResult* result = nullptr;  ///< where proposals and acceptances are counted
+	/** The registry line whose move is visiting (its tally in result->moveTypes), or NO_ENTRY. */
+	size_t entry = NO_ENTRY;
+	static constexpr size_t NO_ENTRY = ~size_t{0};
 
 	bool greedy() const { return std::isinf(beta); }
 
