@@ -19,6 +19,8 @@ BlackboardSampler::BlackboardSampler(const model::ModelParams& model, const Samp
 	  m_moves(m_model),
 	  m_best(model)
 {
+	for (size_t k = 0; k < m_moves.entries().size(); k++)
+		if (m_moves.entries()[k].target == moves::Target::Shapelet) m_shapeletMoves.push_back(k);
 }
 
 StepResult BlackboardSampler::step(
@@ -56,6 +58,7 @@ void BlackboardSampler::run(StepResult& result, uint64_t seed, int snapshotTempe
 {
 	m_ctx.result = &result;
 	result.moveTypes.clear();
+	result.moveTypes.reserve(m_moves.entries().size());
 	for (const moves::MoveEntry& e : m_moves.entries()) result.moveTypes.push_back({e.name, 0, 0});
 	m_rng.seed(seed);
 	const auto& betas = m_params.schedule.betas();
@@ -139,12 +142,12 @@ void BlackboardSampler::sweep(double beta)
 {
 	m_ctx.beta = beta;
 	for (size_t s = 0; s < m_bb.shapelets().size(); s++)
-		for (size_t k = 0; k < m_moves.entries().size(); k++)
-		{
-			const moves::MoveEntry& e = m_moves.entries()[k];
-			m_ctx.entry = k;
-			if (e.target == moves::Target::Shapelet && !m_bb.explained(s)) e.visit(m_ctx, static_cast<Id>(s));
-		}
+		for (const size_t k : m_shapeletMoves)
+			if (!m_bb.explained(s))
+			{
+				m_ctx.entry = k;
+				m_moves.entries()[k].visit(m_ctx, static_cast<Id>(s));
+			}
 
 	m_tableOrder.clear();
 	m_legOrder.clear();
@@ -176,10 +179,13 @@ void BlackboardSampler::visit(moves::Target target, Id id)
 	{
 		const moves::MoveEntry& e = m_moves.entries()[k];
 		if (e.target != target) continue;
-		m_ctx.entry = k;
 		const int offers = m_ctx.greedy() ? e.polishRepeats : 1;
 		for (int i = 0; i < offers && alive(); i++)
-			if (e.offered(m_ctx, u)) e.visit(m_ctx, id);
+			if (e.offered(m_ctx, u))
+			{
+				m_ctx.entry = k;
+				e.visit(m_ctx, id);
+			}
 	}
 }
 

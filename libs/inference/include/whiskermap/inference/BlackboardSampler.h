@@ -78,5 +78,6 @@ class BlackboardSampler
 	uint64_t m_scoredAfter = NOT_SCORED;  ///< accepted moves when checkpoint last scored the board (NOT_SCORED: score it next time)
 	static constexpr uint64_t NOT_SCORED = ~uint64_t{0};
 	std::vector<uint8_t> m_legSupported, m_tableSupported;
+	std::vector<size_t> m_shapeletMoves;  ///< the registry lines that visit shapelets (priming)
 };
 }  // namespace whiskermap::inference
