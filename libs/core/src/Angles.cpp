@@ -12,7 +12,6 @@ namespace
 double remainder(double d, double period)
 {
 	double r = std::abs(d);
-	if (r < 2 * period) return std::copysign(r >= period ? r - period : r, d);  // the usual case: the loop's last step
 	if (!(r < 16 * period)) return std::fmod(d, period);
 	for (double m = 8 * period; m >= period; m /= 2)
 		if (r >= m) r -= m;

@@ -55,7 +55,8 @@ inline double cachedLog(double x)
 {
 	const uint64_t b = detail::bitsOf(x);
 	const detail::LogSlot& s = detail::logSlots[detail::cacheSlot(b)];
-	if (b != detail::LOG_FREE && b != detail::LOG_BUSY && s.key.load(std::memory_order_acquire) == b) return detail::valueOf(s.value.load(std::memory_order_relaxed));
+	if (b != detail::LOG_FREE && b != detail::LOG_BUSY && s.key.load(std::memory_order_acquire) == b)
+		return detail::valueOf(s.value.load(std::memory_order_relaxed));
 	return detail::cachedLogMiss(x);
 }
 
@@ -67,7 +68,8 @@ inline SinCos cachedSinCos(double a)
 	const uint64_t seq = s.sequence.load(std::memory_order_acquire);
 	if (b != detail::NO_ANGLE && seq % 2 == 0 && s.key.load(std::memory_order_relaxed) == b)
 	{
-		const SinCos hit{detail::valueOf(s.sin.load(std::memory_order_relaxed)), detail::valueOf(s.cos.load(std::memory_order_relaxed))};
+		const SinCos hit{
+			detail::valueOf(s.sin.load(std::memory_order_relaxed)), detail::valueOf(s.cos.load(std::memory_order_relaxed))};
 		std::atomic_thread_fence(std::memory_order_acquire);
 		if (s.sequence.load(std::memory_order_relaxed) == seq) return hit;
 	}
