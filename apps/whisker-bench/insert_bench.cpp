@@ -47,6 +47,46 @@ void report(const char* what, std::vector<double> v)
 		"  %s ms per insertion: median %.4f, p95 %.4f, max %.4f, mean %.4f\n", what, quantile(v, 0.5),
 		quantile(v, 0.95), v.back(), mean);
 }
+
+struct Times
+{
+	std::vector<double> wall, cpu;  ///< ms per insertion, in the log's order
+};
+
+/** Maps the whole rawlog into a new map from `config` (mode overridden unless empty), timing
+ *  every insertion, and prints the run's report. */
+Times mapOnce(const std::string& config, const std::string& mode, const std::string& rawlog)
+{
+	mrpt::maps::CMultiMetricMap mm(maps::MapConfig::load(config));
+	auto map = mm.mapByClass<maps::CHierarchicalObjectMap>();
+	if (!map) throw core::Error(config + ": no hierarchicalObjectMap in [MetricMap]");
+	map->insertionOptions.keep_history = false;  // as whisker-map: memory bounded by the map
+	using Mode = maps::CHierarchicalObjectMap::TInsertionOptions::TMode;
+	if (!mode.empty()) map->insertionOptions.mode = mode == "lasting" ? Mode::Lasting : Mode::PerPose;
+	obs::RawlogReader reader(rawlog);
+	Times t;
+	t.wall.reserve(reader.summary().sweepCount), t.cpu.reserve(reader.summary().sweepCount);
+	obs::RawlogReader::Sweep s;
+	while (reader.next(s))
+	{
+		const mrpt::poses::CPose3D pose(s.robotPose);
+		const double c0 = threadCpuMs();
+		const auto t0 = std::chrono::steady_clock::now();
+		map->insertObservation(*s.obs, pose);
+		t.wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+		t.cpu.push_back(threadCpuMs() - c0);
+	}
+	if (t.wall.empty()) throw core::Error(rawlog + ": no whisker sweeps");
+	rusage usage{};
+	getrusage(RUSAGE_SELF, &usage);
+	std::printf(
+		"%s (%s): %zu insertions, %zu map objects, peak RSS %.1f MB\n", rawlog.c_str(),
+		map->lasting() ? "lasting" : "per_pose", t.wall.size(), map->mapObjects().size(),
+		static_cast<double>(usage.ru_maxrss) / 1024.0);
+	report("wall", t.wall);
+	report("cpu ", t.cpu);
+	return t;
+}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -68,37 +108,10 @@ int main(int argc, char** argv)
 		std::vector<double> leastWall, leastCpu;
 		for (unsigned run = 0; run < repeat; run++)
 		{
-			mrpt::maps::CMultiMetricMap mm(maps::MapConfig::load(config));
-			auto map = mm.mapByClass<maps::CHierarchicalObjectMap>();
-			if (!map) throw core::Error(config + ": no hierarchicalObjectMap in [MetricMap]");
-			map->insertionOptions.keep_history = false;  // as whisker-map: memory bounded by the map
-			using Mode = maps::CHierarchicalObjectMap::TInsertionOptions::TMode;
-			if (!mode.empty()) map->insertionOptions.mode = mode == "lasting" ? Mode::Lasting : Mode::PerPose;
-			obs::RawlogReader reader(rawlog);
-			std::vector<double> wall, cpu;
-			wall.reserve(reader.summary().sweepCount), cpu.reserve(reader.summary().sweepCount);
-			obs::RawlogReader::Sweep s;
-			while (reader.next(s))
-			{
-				const mrpt::poses::CPose3D pose(s.robotPose);
-				const double c0 = threadCpuMs();
-				const auto t0 = std::chrono::steady_clock::now();
-				map->insertObservation(*s.obs, pose);
-				wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-				cpu.push_back(threadCpuMs() - c0);
-			}
-			if (wall.empty()) throw core::Error(rawlog + ": no whisker sweeps");
-			rusage usage{};
-			getrusage(RUSAGE_SELF, &usage);
-			std::printf(
-				"%s (%s): %zu insertions, %zu map objects, peak RSS %.1f MB\n", rawlog.c_str(),
-				map->lasting() ? "lasting" : "per_pose", wall.size(), map->mapObjects().size(),
-				static_cast<double>(usage.ru_maxrss) / 1024.0);
-			report("wall", wall);
-			report("cpu ", cpu);
-			if (run == 0) leastWall = wall, leastCpu = cpu;
-			for (size_t i = 0; i < wall.size(); i++)
-				leastWall[i] = std::min(leastWall[i], wall[i]), leastCpu[i] = std::min(leastCpu[i], cpu[i]);
+			const Times t = mapOnce(config, mode, rawlog);
+			if (run == 0) leastWall = t.wall, leastCpu = t.cpu;
+			for (size_t i = 0; i < t.wall.size(); i++)
+				leastWall[i] = std::min(leastWall[i], t.wall[i]), leastCpu[i] = std::min(leastCpu[i], t.cpu[i]);
 		}
 		if (repeat > 1)
 		{

@@ -19,11 +19,5 @@ double remainder(double d, double period)
 }
 }  // namespace
 
-double wrapDifference(double d, double period)
-{
-	d = remainder(d, period);
-	if (d <= -period / 2) d += period;
-	if (d > period / 2) d -= period;
-	return d;
-}
+double wrapDifference(double d, double period) { return centred(remainder(d, period), period); }
 }  // namespace whiskermap::core
