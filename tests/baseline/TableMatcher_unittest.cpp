@@ -23,11 +23,20 @@ obs::RawlogReader::Sweep emptyWhisk(const Eigen::Vector2d& where)
 	return {mrpt::poses::CPose2D(where.x(), where.y(), 0), o};
 }
 
+/** The sectors the sweeps swept. */
+std::vector<obs::SweptSector> swept(const std::vector<obs::RawlogReader::Sweep>& sweeps)
+{
+	std::vector<obs::SweptSector> out;
+	for (const auto& s : sweeps)
+		for (const auto& sector : s.obs->toSweptSectors(s.robotPose)) out.push_back(sector);
+	return out;
+}
+
 std::vector<baseline::TableEstimate> match(
 	const std::vector<baseline::Contact>& contacts, const std::vector<obs::RawlogReader::Sweep>& sweeps = {})
 {
 	const auto legs = baseline::LegExtraction::run(contacts, P);
-	const baseline::FreeSpace free(sweeps);
+	const baseline::FreeSpace free(swept(sweeps));
 	return baseline::TableMatcher(contacts, legs.legs, free, P).run();
 }
 }  // namespace
@@ -74,7 +83,7 @@ TEST(TableMatcher, FreeSpaceTellsATwoLegTableFromItsMirror)
 
 TEST(FreeSpace, DepthInsideASweptSector)
 {
-	const baseline::FreeSpace free({emptyWhisk({0, 0})});
+	const baseline::FreeSpace free(swept({emptyWhisk({0, 0})}));
 	EXPECT_EQ(free.sectors(), 1u);
 	EXPECT_NEAR(free.depth({0.5, 0}), 0.1, 1e-9);  // 0.1 m inside the reach
 	EXPECT_NEAR(free.depth({0.2, 0}), 0.2, 1e-9);  // the pivot is 0.2 m away

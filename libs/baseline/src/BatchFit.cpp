@@ -4,16 +4,12 @@
 
 namespace whiskermap::baseline
 {
-BatchFit BatchFit::run(const std::vector<obs::RawlogReader::Sweep>& sweeps, const TBaselineParams& p)
+BatchFit BatchFit::run(const BatchInput& input, const TBaselineParams& p)
 {
 	BatchFit f;
-	for (size_t i = 0; i < sweeps.size(); i++)
-	{
-		const auto c = Contact::of(sweeps[i], uint32_t(i));
-		f.contacts.insert(f.contacts.end(), c.begin(), c.end());
-	}
+	f.contacts = input.contacts();
 	f.legs = LegExtraction::run(f.contacts, p);
-	const FreeSpace free(sweeps);
+	const FreeSpace free(input.sectors());
 	TableMatcher matcher(f.contacts, f.legs.legs, free, p);
 	f.tables = matcher.run();
 	f.proposals = matcher.proposals();

@@ -2,26 +2,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace whiskermap::baseline
 {
 FreeSpace::Cell FreeSpace::cell(const Eigen::Vector2d& p) const
 {
-	return {long(std::floor(p.x() / m_cell)), long(std::floor(p.y() / m_cell))};
+	return {long(std::floor(p.x() / CELL)), long(std::floor(p.y() / CELL))};
 }
 
-FreeSpace::FreeSpace(const std::vector<obs::RawlogReader::Sweep>& sweeps)
+FreeSpace::FreeSpace(std::vector<obs::SweptSector> sectors) : m_sectors(std::move(sectors))
 {
-	for (const auto& s : sweeps)
-		for (const obs::SweptSector& sector : s.obs->toSweptSectors(s.robotPose))
-		{
-			m_sectors.push_back(sector);
-			const Eigen::Vector2d pivot(sector.x, sector.y), ext(sector.radius, sector.radius);
-			const auto [x0, y0] = cell(pivot - ext);
-			const auto [x1, y1] = cell(pivot + ext);
-			for (long cx = x0; cx <= x1; cx++)
-				for (long cy = y0; cy <= y1; cy++) m_grid[{cx, cy}].push_back(m_sectors.size() - 1);
-		}
+	for (size_t k = 0; k < m_sectors.size(); k++)
+	{
+		const obs::SweptSector& sector = m_sectors[k];
+		const Eigen::Vector2d pivot(sector.x, sector.y), ext(sector.radius, sector.radius);
+		const auto [x0, y0] = cell(pivot - ext);
+		const auto [x1, y1] = cell(pivot + ext);
+		for (long cx = x0; cx <= x1; cx++)
+			for (long cy = y0; cy <= y1; cy++) m_grid[{cx, cy}].push_back(k);
+	}
 }
 
 double FreeSpace::depth(const Eigen::Vector2d& p) const

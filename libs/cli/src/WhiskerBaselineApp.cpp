@@ -75,9 +75,12 @@ int run(const Options& o)
 	if (p.leg_width >= std::min(p.table_length, p.table_width))
 		throw core::Error("--leg-width must be smaller than the table length and width");
 
-	const auto sweeps = obs::RawlogReader::read(o.input).sweeps;
-	if (sweeps.empty()) throw core::Error(o.input + ": holds no whisker sweeps");
-	const auto fit = baseline::BatchFit::run(sweeps, p);
+	obs::RawlogReader reader(o.input);  // streamed: memory bounded by BatchInput's samples
+	baseline::BatchInput input(p);
+	obs::RawlogReader::Sweep sweep;
+	while (reader.next(sweep)) input.add(sweep);
+	if (input.sweeps() == 0) throw core::Error(o.input + ": holds no whisker sweeps");
+	const auto fit = baseline::BatchFit::run(input, p);
 
 	OutputDir dir(o.out);
 	writeTables(dir.path("map_tables.csv"), fit, p);
@@ -87,10 +90,11 @@ int run(const Options& o)
 	{
 		const auto& L = fit.legs;
 		std::printf(
-			"whisker-baseline: %zu sweeps, %zu contacts (%zu past the texture gate); %zu legs, %zu clusters "
-			"rejected (%zu contacts), %zu split; %zu table proposals (%zu contradicted by free space); "
+			"whisker-baseline: %llu sweeps, %llu contacts (%zu kept, %zu past the texture gate); %zu legs, %zu "
+			"clusters rejected (%zu contacts), %zu split; %zu table proposals (%zu contradicted by free space); "
 			"%zu tables -> %s\n",
-			sweeps.size(), fit.contacts.size(), L.contactsUsed, L.legs.size(), L.clustersRejected, L.contactsRejected,
+			static_cast<unsigned long long>(input.sweeps()), static_cast<unsigned long long>(input.contactsSeen()),
+			fit.contacts.size(), L.contactsUsed, L.legs.size(), L.clustersRejected, L.contactsRejected,
 			L.splits, fit.proposals, fit.contradicted, fit.tables.size(), dir.finalPath("map_tables.csv").c_str());
 	}
 	return 0;

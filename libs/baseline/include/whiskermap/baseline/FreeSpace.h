@@ -1,6 +1,5 @@
 #pragma once
 #include <Eigen/Core>
-#include <whiskermap/obs/RawlogReader.h>
 #include <whiskermap/obs/SweptSector.h>
 
 #include <map>
@@ -15,7 +14,10 @@ namespace whiskermap::baseline
 class FreeSpace
 {
    public:
-	explicit FreeSpace(const std::vector<obs::RawlogReader::Sweep>& sweeps);
+	/** Edge of the grid cells (metres) that index the sectors. */
+	static constexpr double CELL = 0.5;
+
+	explicit FreeSpace(std::vector<obs::SweptSector> sectors);
 
 	/** How deep a point lies inside the swept region, metres: the largest, over the sectors
 	 *  holding it, of its distance to the sector's boundary (0 when no sector holds it). A
@@ -30,6 +32,5 @@ class FreeSpace
 
 	std::vector<obs::SweptSector> m_sectors;
 	std::map<Cell, std::vector<size_t>> m_grid;  ///< sectors whose bounding box meets each cell
-	double m_cell = 0.5;
 };
 }  // namespace whiskermap::baseline

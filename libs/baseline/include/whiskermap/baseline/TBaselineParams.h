@@ -29,6 +29,10 @@ struct TBaselineParams
 	double angle_tolerance = 0.14;  ///< radians (8 degrees): leg yaws vs the table's, modulo 90 degrees
 	double free_margin = 0.01;  ///< metres: a predicted leg swept through by this much is contradicted
 
+	// Bounded memory (BatchInput): a uniform sample per cell once a cell has received more.
+	size_t contacts_per_cell = 512;  ///< contacts kept per square cell of one leg width
+	size_t sectors_per_cell = 4096;  ///< swept sectors kept per FreeSpace cell (by pivot)
+
 	/** The known table from the [MetricMap_hierarchicalObjectMap_00_model] section of a
 	 *  whisker-map .ini (model::ModelParams, read strictly); built-in defaults when the file
 	 *  has no such section, as for whisker-map. Throws core::Error naming the file when it is
