@@ -88,6 +88,7 @@ void LastingMap::refitReported(const model::ModelParams& model)
 	for (const auto& [b, pose] : m_carry)
 	{
 		const model::Id t = m_newTables[static_cast<size_t>(b)];
+		if (t == model::NONE) continue;  // merged away (mergeOverlappingLegs)
 		model::Table r = m_state.reported(t);
 		r.x = pose.x, r.y = pose.y, r.theta = pose.theta;
 		m_state.setReported(t, r);
@@ -178,6 +179,22 @@ LastingMap::TStats LastingMap::solve(
 				m_carry.emplace_back(b, m_state.reported(m_region->tables[static_cast<size_t>(b)]));
 	}
 	m_state.replace(*m_region, solved, existence(board, solved, model), m_newTables, m_newLegs, wallExistence(solved), model);
+	// No two legs in one place: the search may pass through overlaps (eq. 16 is soft), the
+	// stored map may not (doc/map-plugin.md). The merged legs' tables are refitted.
+	m_merged.clear();
+	if (m_state.mergeOverlappingLegs(m_newLegs, m_merged, m_refit) > 0)
+	{
+		for (model::Id& l : m_newLegs)
+			if (l != model::NONE && !m_state.hasLeg(l)) l = model::NONE;
+		for (model::Id& t : m_newTables)
+			if (t != model::NONE && !m_state.hasTable(t)) t = model::NONE;
+		for (const model::Id l : m_merged)
+			if (m_state.hasLeg(l))
+			{
+				m_state.fold(l, m_options.contacts_per_leg, model);
+				m_refit.push_back(m_state.leg(l).parent);
+			}
+	}
 	for (const model::Id l : m_newLegs)
 		if (l != model::NONE) m_state.fold(l, m_options.contacts_per_leg, model);
 	for (const model::Id c : m_new)

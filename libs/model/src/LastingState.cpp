@@ -67,8 +67,45 @@ Id LastingState::addLeg(const Leg& l, const LegEvidence& e)
 	m_evidence[id] = e;
 	m_legContacts[id].clear();
 	m_legGrid.insert(id, l.x, l.y);
+	m_maxLegRadius = std::max(m_maxLegRadius, std::hypot(l.wx, l.wy) / 2);
 	if (l.parent != NONE) m_tableLegs[l.parent].push_back(id);
 	return id;
+}
+
+size_t LastingState::mergeOverlappingLegs(const std::vector<Id>& legs, std::vector<Id>& kept, std::vector<Id>& touched)
+{
+	size_t merges = 0;
+	std::vector<Id> near;
+	for (const Id start : legs)
+	{
+		Id a = start;
+		while (a != NONE && hasLeg(a))
+		{
+			const OrientedRect r = legRect(m_legs[a]);
+			near.clear();
+			m_legGrid.forEachNear(r.cx, r.cy, std::hypot(r.hx, r.hy) + m_maxLegRadius, [&](Id o) {
+				if (o != a && r.overlaps(legRect(m_legs[o]))) near.push_back(o);
+			});
+			if (near.empty()) break;
+			const Id b = *std::min_element(near.begin(), near.end());  // the grid's order is not the content's
+			const bool keepA = contactsExplained(a) > contactsExplained(b) || (contactsExplained(a) == contactsExplained(b) && a < b);
+			const Id into = keepA ? a : b, from = keepA ? b : a;
+			const std::vector<Id> contacts = m_legContacts[from];
+			m_evidence[into].merge(m_evidence[from]);
+			const Id parent = m_legs[from].parent;
+			removeLeg(from);
+			for (const Id c : contacts) setContactLeg(c, into);
+			if (parent != NONE)
+			{
+				touched.push_back(parent);
+				if (m_tableLegs[parent].empty()) removeTable(parent);
+			}
+			kept.push_back(into);
+			merges++;
+			a = into;  // it may overlap a third
+		}
+	}
+	return merges;
 }
 
 void LastingState::removeTable(Id t)

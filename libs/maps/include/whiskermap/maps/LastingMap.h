@@ -15,7 +15,7 @@ namespace whiskermap::maps
  *  contacts, cuts the local problem around them out of the state, associates them with the
  *  legs there and anneals it (inference::BlackboardSampler::anneal: earlier decisions nearby
  *  can be revised), scores each table's existence (inference::TableExistence), writes the
- *  result back and folds old contacts into their legs' evidence. */
+ *  result back, merges legs that overlap (no two legs in one place) and folds old contacts into their legs' evidence. */
 class LastingMap
 {
    public:
@@ -38,7 +38,7 @@ class LastingMap
 		 *  insertion order of their contacts), visiting every hypothesis within a table
 		 *  diagonal plus a parent gate of them (not only within visit_radius), so that tables
 		 *  assembled from neighbours' legs before the right legs were touched are taken apart
-		 *  later (doc/map-plugin.md, "What it does", step 9). 0: never. */
+		 *  later (doc/map-plugin.md, "What it does", step 10). 0: never. */
 		uint32_t noisy_revisions = 2;
 		/** Report each table at the pose of its rigid fit to all its legs' contacts
 		 *  (inference::fitRigidTable), refitted when its legs change; false: the model's own
@@ -128,7 +128,7 @@ class LastingMap
 	TOptions::TSchedule m_samplerSchedule;
 	std::unique_ptr<model::LastingState::Region> m_region;
 	inference::TableExistence m_existence;
-	std::vector<model::Id> m_new, m_newTables, m_newLegs, m_refit;
+	std::vector<model::Id> m_new, m_newTables, m_newLegs, m_refit, m_merged;
 	std::vector<std::pair<model::Id, model::Table>> m_carry;
 };
 }  // namespace whiskermap::maps

@@ -86,6 +86,13 @@ class LastingState
 	/** Folds the oldest explicit contacts of leg `l` into its evidence (scored with `model`)
 	 *  until at most `keep` remain. */
 	void fold(Id l, size_t keep, const ModelParams& model);
+	/** Eq. 16 made hard in the stored map (doc/map-plugin.md, "No two legs in one place"): each
+	 *  live leg of `legs` (store ids; NONE skipped) whose rectangle overlaps another stored
+	 *  leg's is merged with it into the one explaining more contacts (a tie: the lower id). The
+	 *  other's explicit contacts are relinked to it, its evidence is merged into it and it is
+	 *  removed; a table left without legs is removed too. Appends the survivor of each merge to
+	 *  `kept` and the parent tables that lost a leg to `touched`; returns the merges made. */
+	size_t mergeOverlappingLegs(const std::vector<Id>& legs, std::vector<Id>& kept, std::vector<Id>& touched);
 	/** Forgets the oldest unexplained contacts in the cell of contact `c` (cells of
 	 *  `cellSize`) beyond `keep`; returns how many were forgotten. */
 	size_t forgetUnexplained(Id c, size_t keep, double cellSize);
@@ -142,6 +149,7 @@ class LastingState
 	std::vector<LegEvidence> m_evidence;
 	std::vector<std::vector<Id>> m_tableLegs, m_legContacts;
 	SpatialGrid m_tableGrid, m_legGrid, m_contactGrid;  ///< contacts: the unexplained ones
+	double m_maxLegRadius = 0;  ///< the largest half-diagonal of a leg ever added
 	uint64_t m_seq = 0;
 	uint32_t m_epoch = 0;
 	std::vector<uint32_t> m_tableMark, m_legMark, m_contactMark;
