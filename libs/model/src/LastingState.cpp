@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace whiskermap::model
 {
@@ -87,8 +88,13 @@ size_t LastingState::mergeOverlappingLegs(const std::vector<Id>& legs, std::vect
 				if (o != a && r.overlaps(legRect(m_legs[o]))) near.push_back(o);
 			});
 			if (near.empty()) break;
-			const Id b = *std::min_element(near.begin(), near.end());  // the grid's order is not the content's
-			const bool keepA = contactsExplained(a) > contactsExplained(b) || (contactsExplained(a) == contactsExplained(b) && a < b);
+			// By content, never by store id (a reloaded state numbers its legs differently).
+			const auto before = [&](Id p, Id q) {
+				return std::make_tuple(contactsExplained(q), m_legs[p].x, m_legs[p].y) <
+					   std::make_tuple(contactsExplained(p), m_legs[q].x, m_legs[q].y);
+			};  // more contacts first, then by position
+			const Id b = *std::min_element(near.begin(), near.end(), before);
+			const bool keepA = before(a, b);
 			const Id into = keepA ? a : b, from = keepA ? b : a;
 			const std::vector<Id> contacts = m_legContacts[from];
 			m_evidence[into].merge(m_evidence[from]);
