@@ -96,11 +96,11 @@ size_t LastingState::mergeOverlappingLegs(const std::vector<Id>& legs, std::vect
 			const Id b = *std::min_element(near.begin(), near.end(), before);
 			const bool keepA = before(a, b);
 			const Id into = keepA ? a : b, from = keepA ? b : a;
-			const std::vector<Id> contacts = m_legContacts[from];
+			const std::vector<Id> contacts = m_legContacts[from];  // relinked first: never unexplained
+			for (const Id c : contacts) setContactLeg(c, into);
 			m_evidence[into].merge(m_evidence[from]);
 			const Id parent = m_legs[from].parent;
 			removeLeg(from);
-			for (const Id c : contacts) setContactLeg(c, into);
 			if (parent != NONE)
 			{
 				touched.push_back(parent);

@@ -28,7 +28,6 @@ class BatchInput
 
 	uint64_t sweeps() const { return m_sweeps; }
 	uint64_t contactsSeen() const { return m_contacts.seen(); }
-	uint64_t sectorsSeen() const { return m_sectors.seen(); }
 
    private:
 	uint64_t m_sweeps = 0;
