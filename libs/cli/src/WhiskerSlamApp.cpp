@@ -151,7 +151,7 @@ int WhiskerSlamApp::main(int argc, char** argv)
 {
 	CLI::App app{
 		"whisker-slam: tactile SLAM. Runs MRPT's Rao-Blackwellised particle filter "
-		"(CMetricMapBuilderRBPF) on a rawlog (either layout), each particle holding a "
+		"(CMultiMetricMapPDF) on a rawlog (either layout), each particle holding a "
 		"hierarchicalObjectMap; the particles move with the odometry's motion model and are "
 		"weighed by the sweep likelihood. Writes, in OUTDIR: estimated_path.txt (the best "
 		"particle's path) and odometry_path.txt, one line per sweep in the ground-truth "

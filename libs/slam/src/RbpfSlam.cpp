@@ -1,40 +1,57 @@
+#include <mrpt/bayes/CParticleFilterCapable.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CSensoryFrame.h>
-#include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/random/RandomGenerators.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/slam/RbpfSlam.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace whiskermap::slam
 {
 namespace
 {
-mrpt::slam::CMetricMapBuilderRBPF::TConstructionOptions builderOptions(
-	const TSlamParams& p, const mrpt::maps::TSetOfMetricMapInitializers& maps)
+mrpt::bayes::CParticleFilter::TParticleFilterOptions filterOptions(const TSlamParams& p)
 {
-	mrpt::slam::CMetricMapBuilderRBPF::TConstructionOptions o;
-	o.mapsInitializers = maps;
-	o.PF_options.sampleSize = p.particles;
-	o.PF_options.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
-	o.PF_options.resamplingMethod = p.resampling;
-	o.PF_options.adaptiveSampleSize = false;
-	o.PF_options.BETA = 0;  // the filter never resamples by itself: step() does, after recording the ESS
-	o.insertionLinDistance = o.insertionAngDistance = 0;
-	o.localizeLinDistance = o.localizeAngDistance = 0;
-	o.verbosity_level = mrpt::system::LVL_ERROR;
+	mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
+	o.sampleSize = p.particles;
+	o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
+	o.resamplingMethod = p.resampling;
+	o.adaptiveSampleSize = false;
+	o.BETA = 0;  // the filter never resamples by itself: step() does, after recording the ESS
 	return o;
+}
+
+mrpt::math::TPose2D latest(const mrpt::maps::CRBPFParticleData& d)
+{
+	const auto& p = d.robotPath.back();
+	return {p.x, p.y, p.yaw};
 }
 }  // namespace
 
 RbpfSlam::RbpfSlam(const TSlamParams& params, const mrpt::maps::TSetOfMetricMapInitializers& maps)
-	: m_params(params), m_builder(builderOptions(params, maps))
+	: m_params(params), m_pdf(filterOptions(params), maps, {})
 {
 	mrpt::random::getRandomGenerator().randomize(params.seed);
-	m_builder.options.debugForceInsertion = true;  // every sweep is localised and inserted
-	m_builder.setVerbosityLevel(mrpt::system::LVL_ERROR);
+	m_filter.m_options = filterOptions(params);
+	m_filter.setVerbosityLevel(mrpt::system::LVL_ERROR);
+}
+
+void RbpfSlam::resample()
+{
+	// CParticleFilterCapable::performResampling, with the surviving indexes kept for the
+	// paths. Like MRPT 2.5.8's, it leaves the copies with their parents' weights: its loop
+	// that sets equal weights runs to out_particle_count, which is 0 when the count does not
+	// change.
+	std::vector<double> logW(m_pdf.particlesCount());
+	for (size_t i = 0; i < logW.size(); i++) logW[i] = m_pdf.getW(i);
+	std::vector<size_t> parents;
+	mrpt::bayes::CParticleFilterCapable::computeResampling(m_params.resampling, logW, parents);
+	m_pdf.performSubstitution(parents);
+	std::sort(parents.begin(), parents.end());  // performSubstitution's order
+	m_paths.resample(parents);
 }
 
 void RbpfSlam::step(const obs::RawlogReader::Sweep& sweep)
@@ -43,8 +60,8 @@ void RbpfSlam::step(const obs::RawlogReader::Sweep& sweep)
 	if (!m_lastOdometry)
 	{
 		// Known start: every particle at the first odometry pose, with an empty map.
-		const mrpt::poses::CPosePDFGaussian start(sweep.robotPose);
-		m_builder.initialize(mrpt::maps::CSimpleMap(), &start);
+		m_pdf.clear(mrpt::poses::CPose3D(sweep.robotPose));
+		m_paths.reset(m_pdf.particlesCount(), sweep.robotPose.asTPose());
 	}
 	const mrpt::poses::CPose2D increment = sweep.robotPose - (m_lastOdometry ? *m_lastOdometry : sweep.robotPose);
 	m_lastOdometry = sweep.robotPose;
@@ -52,9 +69,13 @@ void RbpfSlam::step(const obs::RawlogReader::Sweep& sweep)
 	auto& g = model.gaussianModel;
 	g.a1 *= m_params.motion_noise_scale, g.a2 *= m_params.motion_noise_scale;
 	g.a3 *= m_params.motion_noise_scale, g.a4 *= m_params.motion_noise_scale;
+	// The increment as CMetricMapBuilderRBPF accumulates it (composed onto a zero CPose3D),
+	// so that the draws are the builder's to the last bit.
+	mrpt::poses::CPose3D accumulated;
+	accumulated += mrpt::poses::CPose3D(increment);
 	mrpt::obs::CActionRobotMovement2D move;
 	move.timestamp = sweep.obs->timestamp;
-	move.computeFromOdometry(increment, model);
+	move.computeFromOdometry(mrpt::poses::CPose2D(accumulated), model);
 	mrpt::obs::CActionCollection actions;
 	actions.insert(move);
 	mrpt::obs::CSensoryFrame frame;
@@ -63,16 +84,18 @@ void RbpfSlam::step(const obs::RawlogReader::Sweep& sweep)
 	// Resampling decided at the previous step happens now, before moving the particles: the
 	// weights after the last sweep stay as the filter left them, so the best particle at the
 	// end is the most probable one, not a pick among equal weights.
-	auto& pdf = m_builder.mapPDF;
-	if (m_resamplePending)
+	if (m_resamplePending) resample();
+	m_filter.executeOn(m_pdf, &actions, &frame);
+	for (size_t i = 0; i < m_pdf.particlesCount(); i++)
 	{
-		mrpt::bayes::CParticleFilter::TParticleFilterOptions pf;
-		pf.resamplingMethod = m_params.resampling;
-		pdf.performResampling(pf);
+		auto& d = *m_pdf.m_particles[i].d;
+		frame.insertObservationsInto(d.mapTillNow, mrpt::poses::CPose3D(d.robotPath.back()));
+		d.mapTillNow.auxParticleFilterCleanUp();
+		m_paths.extend(i, latest(d));
+		d.robotPath.erase(d.robotPath.begin(), d.robotPath.end() - 1);  // the filter needs the latest pose only
 	}
-	m_builder.processActionObservation(actions, frame);
 	TStep s;
-	s.ess = pdf.ESS();
+	s.ess = m_pdf.ESS();
 	s.resampled = m_resamplePending = s.ess < m_params.resample_ess;
 	s.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 	m_steps.push_back(s);
@@ -80,31 +103,29 @@ void RbpfSlam::step(const obs::RawlogReader::Sweep& sweep)
 
 size_t RbpfSlam::bestParticle() const
 {
-	const auto& pdf = m_builder.mapPDF;
 	size_t best = 0;
-	for (size_t i = 1; i < pdf.particlesCount(); i++)
-		if (pdf.getW(i) > pdf.getW(best)) best = i;
+	for (size_t i = 1; i < m_pdf.particlesCount(); i++)
+		if (m_pdf.getW(i) > m_pdf.getW(best)) best = i;
 	return best;
 }
 
 std::vector<mrpt::poses::CPose2D> RbpfSlam::bestPath() const
 {
-	std::deque<mrpt::math::TPose3D> path;
-	m_builder.mapPDF.getPath(bestParticle(), path);
+	const auto path = m_paths.path(bestParticle());
 	// The path starts with the initial pose, then one pose per step.
 	if (path.size() != m_steps.size() + 1)
 		throw core::Error(
 			"RBPF: the best particle's path has " + std::to_string(path.size()) + " poses for " +
 			std::to_string(m_steps.size()) + " sweeps");
 	std::vector<mrpt::poses::CPose2D> out;
-	for (size_t i = 1; i < path.size(); i++) out.emplace_back(path[i].x, path[i].y, path[i].yaw);
+	for (size_t i = 1; i < path.size(); i++) out.emplace_back(path[i]);
 	return out;
 }
 
 const maps::CHierarchicalObjectMap& RbpfSlam::bestMap() const
 {
 	if (m_steps.empty()) throw core::Error("RBPF: no sweep processed yet");
-	const auto map = m_builder.mapPDF.m_particles[bestParticle()].d->mapTillNow.mapByClass<maps::CHierarchicalObjectMap>();
+	const auto map = m_pdf.m_particles[bestParticle()].d->mapTillNow.mapByClass<maps::CHierarchicalObjectMap>();
 	if (!map) throw core::Error("RBPF: the particles hold no hierarchicalObjectMap");
 	return *map;
 }

@@ -1,8 +1,10 @@
 #pragma once
 #include <mrpt/maps/TMetricMapInitializer.h>
-#include <mrpt/slam/CMetricMapBuilderRBPF.h>
+#include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/maps/CMultiMetricMapPDF.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/obs/RawlogReader.h>
+#include <whiskermap/slam/PathTree.h>
 #include <whiskermap/slam/TSlamParams.h>
 
 #include <optional>
@@ -10,17 +12,27 @@
 
 namespace whiskermap::slam
 {
-/** Tactile SLAM with MRPT's own Rao-Blackwellised particle filter: a CMetricMapBuilderRBPF
- *  whose particles each hold a CMultiMetricMap with a CHierarchicalObjectMap (standard
- *  proposal: particles move by samples of the odometry increment's Gaussian, are weighted
- *  by the map's sweep likelihood, then every particle's map inserts the sweep at its pose).
+/** Tactile SLAM with MRPT's own Rao-Blackwellised particle filter: a CMultiMetricMapPDF
+ *  whose particles each hold a CMultiMetricMap with a CHierarchicalObjectMap, run by MRPT's
+ *  CParticleFilter (standard proposal: particles move by samples of the odometry increment's
+ *  Gaussian, are weighted by the map's sweep likelihood, then every particle's map inserts
+ *  the sweep at its pose).
+ *
+ *  Each step is what CMetricMapBuilderRBPF::processActionObservation does with
+ *  debugForceInsertion and zero distance thresholds (the same action, the same draws, the
+ *  same insertions), minus the builder's two stores that grow with the run: its CSimpleMap
+ *  of every sensory frame with every particle's pose at it, and every particle's whole path
+ *  (CRBPFParticleData::robotPath, copied at each resampling). Here a particle keeps only its
+ *  latest pose and the paths are a PathTree of shared ancestors, so memory is the particles'
+ *  maps plus about one pose per step (doc/slam.md, "Memory").
  *
  *  Sweeps come one by one with the odometry pose the rawlog gives them (either layout); the
  *  increment between consecutive odometry poses becomes a CActionRobotMovement2D with the
  *  motion model of TSlamParams::motion. The first sweep's odometry pose is the known start.
  *  Every sweep is localised and inserted (no distance thresholds), so the path has one pose
  *  per sweep. When the normalised effective sample size after a sweep falls below
- *  resample_ess, the particles are resampled (MRPT's performResampling) before the next one.
+ *  resample_ess, the particles are resampled (as MRPT's performResampling does) before the
+ *  next one.
  *
  *  Reproducible: the constructor seeds MRPT's global random generator with params.seed
  *  (every draw of the filter comes from it; the maps' samplers have their own seeds). */
@@ -44,13 +56,18 @@ class RbpfSlam
 	std::vector<mrpt::poses::CPose2D> bestPath() const;
 	/** That particle's map. */
 	const maps::CHierarchicalObjectMap& bestMap() const;
-	const mrpt::maps::CMultiMetricMapPDF& particles() const { return m_builder.mapPDF; }
+	const mrpt::maps::CMultiMetricMapPDF& particles() const { return m_pdf; }
+	/** Every particle's path. */
+	const PathTree& paths() const { return m_paths; }
 
    private:
 	size_t bestParticle() const;
+	void resample();
 
 	TSlamParams m_params;
-	mrpt::slam::CMetricMapBuilderRBPF m_builder;
+	mrpt::bayes::CParticleFilter m_filter;
+	mrpt::maps::CMultiMetricMapPDF m_pdf;
+	PathTree m_paths;
 	std::optional<mrpt::poses::CPose2D> m_lastOdometry;
 	std::vector<TStep> m_steps;
 	bool m_resamplePending = false;

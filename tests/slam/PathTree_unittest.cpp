@@ -1,0 +1,95 @@
+#include <gtest/gtest.h>
+#include <whiskermap/slam/PathTree.h>
+
+#include <algorithm>
+#include <random>
+
+using whiskermap::slam::PathTree;
+using mrpt::math::TPose2D;
+
+namespace
+{
+bool samePath(const std::vector<TPose2D>& a, const std::vector<TPose2D>& b)
+{
+	if (a.size() != b.size()) return false;
+	for (size_t k = 0; k < a.size(); k++)
+		if (a[k].x != b[k].x || a[k].y != b[k].y || a[k].phi != b[k].phi) return false;
+	return true;
+}
+}  // namespace
+
+TEST(PathTree, PathsAreThoseOfParticlesCopiedWhole)
+{
+	// Against the plain form: every particle's path a list, copied whole at each resampling.
+	std::mt19937 rng(7);
+	for (const size_t particles : {1u, 3u, 8u})
+	{
+		PathTree tree;
+		tree.reset(particles, {0.5, -1, 0.1});
+		std::vector<std::vector<TPose2D>> plain(particles, {{0.5, -1, 0.1}});
+		for (int step = 0; step < 300; step++)
+		{
+			for (size_t i = 0; i < plain.size(); i++)
+			{
+				const TPose2D p{double(step), double(i), double(rng() % 1000) / 1000};
+				tree.extend(i, p);
+				plain[i].push_back(p);
+			}
+			if (rng() % 3 == 0)
+			{
+				// Any parents, any count (a filter may change its size), in sorted order.
+				std::vector<size_t> parents(1 + rng() % (2 * particles));
+				for (auto& q : parents) q = rng() % plain.size();
+				std::sort(parents.begin(), parents.end());
+				std::vector<std::vector<TPose2D>> next;
+				for (const size_t q : parents) next.push_back(plain[q]);
+				plain = next;
+				tree.resample(parents);
+			}
+			ASSERT_EQ(tree.particles(), plain.size());
+			for (size_t i = 0; i < plain.size(); i++) ASSERT_TRUE(samePath(tree.path(i), plain[i])) << step << " " << i;
+		}
+	}
+}
+
+TEST(PathTree, SharedAncestorsAreStoredOnce)
+{
+	const size_t particles = 10, steps = 5000;
+	PathTree tree;
+	tree.reset(particles, {});
+	for (size_t step = 0; step < steps; step++)
+	{
+		for (size_t i = 0; i < particles; i++) tree.extend(i, {double(step), double(i), 0});
+		tree.resample(std::vector<size_t>(particles, step % particles));  // all descend from one
+	}
+	// The start and one lineage of a pose per step (every particle's latest pose is the same
+	// parent's): not particles x steps.
+	EXPECT_EQ(tree.nodes(), 1 + steps);
+	for (size_t i = 0; i < particles; i++) tree.extend(i, {-1, double(i), 0});
+	EXPECT_EQ(tree.nodes(), 1 + steps + particles);
+	EXPECT_EQ(tree.path(3).size(), steps + 2);
+}
+
+TEST(PathTree, WithoutResamplingEveryPathIsItsOwn)
+{
+	PathTree tree;
+	tree.reset(4, {});
+	for (int step = 0; step < 100; step++)
+		for (size_t i = 0; i < 4; i++) tree.extend(i, {double(step), 0, 0});
+	EXPECT_EQ(tree.nodes(), 1 + 4 * 100u);
+}
+
+TEST(PathTree, ALongPathIsFreedWithoutRecursionAndItsNodesReused)
+{
+	PathTree tree;
+	tree.reset(1, {});
+	for (int step = 0; step < 1000000; step++) tree.extend(0, {double(step), 0, 0});
+	EXPECT_EQ(tree.nodes(), 1000001u);
+	tree.resample({0, 0});  // two particles share the whole path
+	tree.extend(1, {-1, 0, 0});
+	EXPECT_EQ(tree.nodes(), 1000002u);
+	tree.resample({1});  // the first lineage's leaf goes; the shared path stays
+	EXPECT_EQ(tree.nodes(), 1000002u);
+	tree.reset(2, {});
+	EXPECT_EQ(tree.nodes(), 1u);
+}
