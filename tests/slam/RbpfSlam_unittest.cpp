@@ -127,3 +127,48 @@ TEST(RbpfSlam, BestMapIsTheMapBuiltAtItsPath)
 		EXPECT_EQ(rebuilt[i].y, best[i].y);
 	}
 }
+
+TEST(RbpfSlam, ResamplingLeavesEqualWeightsAndOneLatestPosePerParticle)
+{
+	auto p = slam::TSlamParams::load(SLAM_INI);
+	p.particles = 6;
+	const auto sweeps = firstSweeps(400);
+	slam::RbpfSlam s(p, maps::MapConfig::load(p.map_config));
+	// Up to a sweep after which particles of clearly different weights are all likely to
+	// survive (and no resampling is pending), so that the copies' parents differ in weight.
+	const auto& pdf = s.particles();
+	const auto spread = [&] {
+		double lo = 0;  // the largest log weight is 0 (normalised)
+		for (size_t i = 0; i < pdf.particlesCount(); i++) lo = std::min(lo, pdf.getW(i));
+		return lo;
+	};
+	size_t k = 0;
+	for (; k < sweeps.size(); k++)
+	{
+		s.step(sweeps[k]);
+		if (!s.steps().back().resampled && spread() < -0.2 && spread() > -1) break;
+	}
+	ASSERT_LT(k, sweeps.size());
+	std::vector<std::vector<mrpt::math::TPose2D>> before;
+	for (size_t i = 0; i < s.paths().particles(); i++) before.push_back(s.paths().path(i));
+	s.resample();
+	for (size_t i = 0; i < pdf.particlesCount(); i++)
+	{
+		EXPECT_EQ(pdf.getW(i), 0.0) << i;  // MRPT 2.5.8's performResampling keeps the parents' weights
+		EXPECT_EQ(pdf.m_particles[i].d->robotPath.size(), 1u);  // the paths live in the PathTree
+	}
+	// Every path is a survivor's path from before, and the latest poses are the particles'.
+	const auto same = [](const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b) {
+		return a.x == b.x && a.y == b.y && a.phi == b.phi;
+	};
+	for (size_t i = 0; i < s.paths().particles(); i++)
+	{
+		const auto path = s.paths().path(i);
+		ASSERT_EQ(path.size(), k + 2);
+		EXPECT_TRUE(std::any_of(before.begin(), before.end(), [&](const auto& b) {
+			return std::equal(b.begin(), b.end(), path.begin(), same);
+		}));
+		const auto& q = pdf.m_particles[i].d->robotPath.back();
+		EXPECT_TRUE(same(path.back(), {q.x, q.y, q.yaw}));
+	}
+}

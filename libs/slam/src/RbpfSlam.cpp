@@ -42,16 +42,20 @@ RbpfSlam::RbpfSlam(const TSlamParams& params, const mrpt::maps::TSetOfMetricMapI
 void RbpfSlam::resample()
 {
 	// CParticleFilterCapable::performResampling, with the surviving indexes kept for the
-	// paths. Like MRPT 2.5.8's, it leaves the copies with their parents' weights: its loop
-	// that sets equal weights runs to out_particle_count, which is 0 when the count does not
-	// change.
+	// paths, and equal weights after it: a copy stands for its share of its parent's weight
+	// by being a copy. (MRPT 2.5.8's performResampling leaves the copies with their parents'
+	// weights when the particle count does not change: its loop that sets them equal runs to
+	// out_particle_count, which is then 0. The parents' weights then count twice, once in
+	// the number of copies and once in their weights.)
 	std::vector<double> logW(m_pdf.particlesCount());
 	for (size_t i = 0; i < logW.size(); i++) logW[i] = m_pdf.getW(i);
 	std::vector<size_t> parents;
 	mrpt::bayes::CParticleFilterCapable::computeResampling(m_params.resampling, logW, parents);
 	m_pdf.performSubstitution(parents);
+	for (size_t i = 0; i < m_pdf.particlesCount(); i++) m_pdf.setW(i, 0);
 	std::sort(parents.begin(), parents.end());  // performSubstitution's order
 	m_paths.resample(parents);
+	m_resamplePending = false;
 }
 
 void RbpfSlam::step(const obs::RawlogReader::Sweep& sweep)

@@ -31,8 +31,8 @@ namespace whiskermap::slam
  *  motion model of TSlamParams::motion. The first sweep's odometry pose is the known start.
  *  Every sweep is localised and inserted (no distance thresholds), so the path has one pose
  *  per sweep. When the normalised effective sample size after a sweep falls below
- *  resample_ess, the particles are resampled (as MRPT's performResampling does) before the
- *  next one.
+ *  resample_ess, the particles are resampled before the next one, and their weights made
+ *  equal (MRPT 2.5.8's performResampling leaves them unequal: resample()).
  *
  *  Reproducible: the constructor seeds MRPT's global random generator with params.seed
  *  (every draw of the filter comes from it; the maps' samplers have their own seeds). */
@@ -50,6 +50,9 @@ class RbpfSlam
 
 	/** One filter step on a sweep. */
 	void step(const obs::RawlogReader::Sweep& sweep);
+	/** Resamples the particles now (step() does it before a sweep when the ESS after the
+	 *  previous one fell below resample_ess): MRPT's resampling method, then equal weights. */
+	void resample();
 
 	const std::vector<TStep>& steps() const { return m_steps; }
 	/** The path of the particle with the highest weight: one pose per sweep so far. */
@@ -62,7 +65,6 @@ class RbpfSlam
 
    private:
 	size_t bestParticle() const;
-	void resample();
 
 	TSlamParams m_params;
 	mrpt::bayes::CParticleFilter m_filter;
