@@ -16,7 +16,7 @@ namespace
 std::vector<Entry> straight()
 {
 	std::vector<Entry> p;
-	for (int i = 0; i <= 80; i++) p.push_back({1300000000.0 + i * 0.125, CPose2D(0.125 * i, 0, 0), i + 3});
+	for (int i = 0; i <= 80; i++) p.push_back({1300000000.0 + i * 0.125, {0.125 * i, 0, 0}, i + 3});
 	return p;
 }
 eval::TrajectoryEvaluation evaluate(const std::vector<Entry>& est, const std::vector<Entry>& truth)
@@ -42,7 +42,7 @@ TEST(TrajectoryEvaluation, AScaleDriftOfKnownSize)
 {
 	// The estimate runs 2% long: error 0.02 x at each pose.
 	auto est = straight();
-	for (auto& e : est) e.pose = CPose2D(1.02 * e.pose.x(), 0, 0);
+	for (auto& e : est) e.pose = {1.02 * e.pose.x, 0, 0};
 	const auto r = evaluate(est, straight());
 	// RMSE = 0.02 sqrt(mean x^2); mean over k = 0..80 of (k / 8)^2 = (80 * 161 / 6) / 64 = 33.5416...
 	const double meanSq = 80.0 * 161 / 6 / 64;
@@ -64,7 +64,7 @@ TEST(TrajectoryEvaluation, ARigidMotionIsUndoneByTheAlignment)
 	auto est = straight();
 	const double yaw = core::deg2rad(20);
 	for (auto& e : est)
-		e.pose = CPose2D(0.3, -0.1, yaw) + e.pose;
+		e.pose = (CPose2D(0.3, -0.1, yaw) + CPose2D(e.pose)).asTPose();
 	const auto r = evaluate(est, straight());
 	EXPECT_NEAR(r.aligned_rmse_m, 0, 1e-12);
 	EXPECT_NEAR(r.aligned_max_m, 0, 1e-12);
@@ -85,7 +85,7 @@ TEST(TrajectoryEvaluation, AHeadingDriftShowsInRpe)
 	CPose2D p;
 	for (int i = 0; i <= 80; i++)
 	{
-		est.push_back({1300000000.0 + i * 0.125, p, 0});
+		est.push_back({1300000000.0 + i * 0.125, p.asTPose(), 0});
 		p = p + CPose2D(0.125, 0, core::deg2rad(0.125));
 	}
 	const auto r = evaluate(est, straight());
@@ -122,7 +122,7 @@ TEST(TrajectoryEvaluation, MismatchesAreErrorsNamingTheLines)
 TEST(TrajectoryEvaluation, JsonAndTextReports)
 {
 	auto est = straight();
-	for (auto& e : est) e.pose = CPose2D(1.02 * e.pose.x(), 0, 0);
+	for (auto& e : est) e.pose = {1.02 * e.pose.x, 0, 0};
 	eval::EvalReport report;
 	report.trajectory = evaluate(est, straight());
 	const auto json = report.toJson();

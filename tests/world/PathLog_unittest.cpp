@@ -38,8 +38,8 @@ TEST_F(PathLogTest, WritesTheGroundTruthFormatAndReadsItBack)
 	const auto p = world::PathLog::read(file);
 	ASSERT_EQ(p.size(), 2u);
 	EXPECT_EQ(p[1].t, 1300000000.25);
-	EXPECT_EQ(p[1].pose.x(), 1.55);
-	EXPECT_EQ(p[1].pose.phi(), -3.0);
+	EXPECT_EQ(p[1].pose.x, 1.55);
+	EXPECT_EQ(p[1].pose.phi, -3.0);
 	EXPECT_EQ(p[1].line, 4);
 }
 

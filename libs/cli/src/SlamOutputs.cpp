@@ -24,14 +24,14 @@ const TColor TRUTH(0, 0, 200), ESTIMATE(200, 40, 40), ODOMETRY(230, 140, 0), MAP
 void writePath(OutputDir& out, const std::string& name, const std::string& title, const Path& path)
 {
 	world::PathLog::Writer w(out.path(name), title);
-	for (const auto& e : path) w.write(e.t, e.pose);
+	for (const auto& e : path) w.write(e.t, mrpt::poses::CPose2D(e.pose));
 	w.close();
 }
 
 std::vector<mrpt::poses::CPose2D> poses(const Path& path)
 {
 	std::vector<mrpt::poses::CPose2D> out;
-	for (const auto& e : path) out.push_back(e.pose);
+	for (const auto& e : path) out.emplace_back(e.pose);
 	return out;
 }
 

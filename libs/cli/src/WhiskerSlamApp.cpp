@@ -83,7 +83,7 @@ int run(Options& o)
 	// The odometry of every sweep (this pass also verifies the whole rawlog).
 	const auto contents = obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
 		if (o.sweeps == 0 || result.odometry.size() < o.sweeps)
-			result.odometry.push_back({mrpt::Clock::toDouble(sw.obs->timestamp), sw.robotPose, 0});
+			result.odometry.push_back({mrpt::Clock::toDouble(sw.obs->timestamp), sw.robotPose.asTPose(), 0});
 	});
 	if (contents.sweepCount == 0)
 		throw core::Error(o.input + ": holds no whisker observations (CObservationWhiskerContacts)");
@@ -120,7 +120,7 @@ int run(Options& o)
 	});
 	if (bar) std::fprintf(stderr, "\n");
 	const auto best = slam.bestPath();
-	for (size_t i = 0; i < n; i++) result.estimated.push_back({result.odometry[i].t, best[i], 0});
+	for (size_t i = 0; i < n; i++) result.estimated.push_back({result.odometry[i].t, best[i].asTPose(), 0});
 
 	// The best particle's map, rebuilt by whisker-map's runner and writer at the best path's
 	// poses (the same insertions the particle made, so the same map: checked below).

@@ -11,7 +11,8 @@ namespace
 {
 constexpr double TIME_TOLERANCE = 1e-6;  // seconds: path files hold microseconds
 
-Eigen::Vector2d xy(const mrpt::poses::CPose2D& p) { return {p.x(), p.y()}; }
+Eigen::Vector2d xy(const mrpt::math::TPose2D& p) { return {p.x, p.y}; }
+mrpt::poses::CPose2D pose(const world::PathLog::Entry& e) { return mrpt::poses::CPose2D(e.pose); }
 
 std::string at(const std::string& label, const world::PathLog::Entry& e)
 {
@@ -50,14 +51,14 @@ TrajectoryEvaluation TrajectoryEvaluation::compute(
 		const double e = (pe[i] - pt[i]).norm();
 		sumSq += e * e;
 		r.ate_max_m = std::max(r.ate_max_m, e);
-		const double yaw = core::wrapToPi(est[i].pose.phi() - truth[i].pose.phi());
+		const double yaw = core::wrapToPi(est[i].pose.phi - truth[i].pose.phi);
 		sumYawSq += yaw * yaw;
 	}
 	r.length_m = s.back();
 	r.ate_rmse_m = std::sqrt(sumSq / n);
 	r.ate_yaw_rmse_deg = core::rad2deg(std::sqrt(sumYawSq / n));
 	r.final_error_m = (pe.back() - pt.back()).norm();
-	r.final_yaw_err_deg = core::rad2deg(std::abs(core::wrapToPi(est.back().pose.phi() - truth.back().pose.phi())));
+	r.final_yaw_err_deg = core::rad2deg(std::abs(core::wrapToPi(est.back().pose.phi - truth.back().pose.phi)));
 
 	r.alignment = Se2Alignment::fit(pe, pt);
 	double alignedSq = 0;
@@ -78,7 +79,7 @@ TrajectoryEvaluation TrajectoryEvaluation::compute(
 		while (j < n && s[j] - s[i] < opts.rpe_segment_m) j++;
 		if (j >= n) break;
 		const double d = s[j] - s[i];
-		const auto E = (truth[j].pose - truth[i].pose) - (est[j].pose - est[i].pose);
+		const auto E = (pose(truth[j]) - pose(truth[i])) - (pose(est[j]) - pose(est[i]));
 		sumTrans += std::hypot(E.x(), E.y()) / d;
 		sumRot += std::abs(core::wrapToPi(E.phi())) / d;
 		r.rpe_segments++;

@@ -29,7 +29,7 @@ std::vector<PathLog::Entry> PathLog::read(const std::string& path)
 			throw core::Error(where + "a value is not finite in '" + text + "'");
 		if (!out.empty() && t < out.back().t)
 			throw core::Error(where + "timestamp " + std::to_string(t) + " goes backwards");
-		out.push_back({t, mrpt::poses::CPose2D(x, y, yaw), lineNo});
+		out.push_back({t, {x, y, yaw}, lineNo});
 	}
 	if (f.bad()) throw core::Error(path + ": read failed");
 	if (out.empty()) throw core::Error(path + ": path file holds no poses");
