@@ -7,6 +7,7 @@
 #include <whiskermap/inference/SamplerParams.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/maps/LastingMap.h>
+#include <whiskermap/maps/SweepLikelihood.h>
 #include <whiskermap/model/ObjectCatalogue.h>
 #include <whiskermap/obs/RawlogReader.h>
 
@@ -113,4 +114,45 @@ TEST(WallMap, SerializationKeepsTheWallsAndContinues)
 	for (size_t i = half; i < half + 60 && i < rawlog.sweeps.size(); i++)
 		for (auto* m : {&a, b.get()}) m->insertObservation(*rawlog.sweeps[i].obs, mrpt::poses::CPose3D(rawlog.sweeps[i].robotPose));
 	EXPECT_TRUE(same(a, *b));
+}
+
+TEST(WallMap, MappedWallsAreSolidsTheSweepLikelihoodPredictsContactsOn)
+{
+	// The office's first sweeps, mapped with walls: the walls join the legs as the solids the
+	// particle filters' sweep likelihood predicts contacts on, and on their own they tell the
+	// true poses from poses 5 cm off.
+	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/office/default.rawlog");
+	maps::CHierarchicalObjectMap m;
+	m.modelParams.classes = model::ObjectCatalogue::load(SRC + "/config/objects.ini");
+	m.modelParams.walls = true;
+	const size_t n = std::min<size_t>(rawlog.sweeps.size(), 300);
+	for (size_t i = 0; i < n; i++) m.insertObservation(*rawlog.sweeps[i].obs, mrpt::poses::CPose3D(rawlog.sweeps[i].robotPose));
+	const auto walls = m.mapWalls();
+	ASSERT_GE(walls.size(), 2u);
+	const auto& solids = m.mappedSolids();
+	ASSERT_EQ(solids.size(), 4 * m.mapTables().size() + walls.size());
+	std::vector<world::Obstacle> wallSolids;
+	for (const auto& s : solids)
+		if (s.table < 0) wallSolids.push_back(s);
+	ASSERT_EQ(wallSolids.size(), walls.size());
+	for (size_t k = 0; k < walls.size(); k++)  // the slab: its centre and its extent
+	{
+		const auto& w = walls[k].wall;
+		const Eigen::Vector2d c = (wallSolids[k].corners[0] + wallSolids[k].corners[2]) / 2;
+		EXPECT_NEAR(c.x(), (w.x0 + w.x1) / 2, 1e-9);
+		EXPECT_NEAR(c.y(), (w.y0 + w.y1) / 2, 1e-9);
+		EXPECT_NEAR((wallSolids[k].corners[2] - wallSolids[k].corners[0]).norm(), std::hypot(w.length(), w.thickness), 1e-9);
+	}
+	const maps::SweepLikelihood::TOptions o;
+	const auto sum = [&](const std::vector<world::Obstacle>& s, double dx, double dy) {
+		double ll = 0;
+		for (size_t i = 0; i < n; i++)
+			ll += maps::SweepLikelihood::logLikelihood(
+				*rawlog.sweeps[i].obs, rawlog.sweeps[i].robotPose + mrpt::poses::CPose2D(dx, dy, 0), s, o);
+		return ll;
+	};
+	const double truth = sum(wallSolids, 0, 0);
+	for (const auto& [dx, dy] : {std::pair{0.05, 0.0}, {-0.05, 0.0}, {0.0, 0.05}, {0.0, -0.05}})
+		EXPECT_GT(truth, sum(wallSolids, dx, dy) + 10) << dx << " " << dy;
+	EXPECT_EQ(sum({}, 0, 0), sum({}, 0.05, 0));  // without solids no pose is preferred
 }

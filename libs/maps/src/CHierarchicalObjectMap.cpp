@@ -131,7 +131,7 @@ std::vector<world::Table> CHierarchicalObjectMap::mapTables() const
 	return tables;
 }
 
-const std::vector<world::Obstacle>& CHierarchicalObjectMap::mappedLegs() const
+const std::vector<world::Obstacle>& CHierarchicalObjectMap::mappedSolids() const
 {
 	// Cached: a particle filter scores every particle against the same map.
 	auto& c = m_legCache;
@@ -142,6 +142,13 @@ const std::vector<world::Obstacle>& CHierarchicalObjectMap::mappedLegs() const
 		const auto tables = mapTables();
 		for (size_t i = 0; i < tables.size(); i++)
 			for (int k = 0; k < 4; k++) c.legs.push_back(tables[i].leg(k, static_cast<int>(i)));
+		for (const auto& s : mapWalls())
+		{
+			const auto& w = s.wall;
+			c.legs.push_back(world::Obstacle::rectangle(
+				{(w.x0 + w.x1) / 2, (w.y0 + w.y1) / 2}, std::atan2(w.y1 - w.y0, w.x1 - w.x0), w.length() / 2,
+				w.thickness / 2, w.texture));
+		}
 		c.valid = true;
 		c.support = likelihoodOptions.min_support;
 		c.existence = likelihoodOptions.min_existence;
@@ -309,7 +316,7 @@ double CHierarchicalObjectMap::internal_computeObservationLikelihood(
 	const auto* sweep = dynamic_cast<const obs::CObservationWhiskerContacts*>(&o);
 	if (!sweep) return 0;
 	return SweepLikelihood::logLikelihood(
-		*sweep, mrpt::poses::CPose2D(takenFrom), mappedLegs(), likelihoodOptions.sweep, &m_sweptGrid);
+		*sweep, mrpt::poses::CPose2D(takenFrom), mappedSolids(), likelihoodOptions.sweep, &m_sweptGrid);
 }
 
 // ---------------------------------------------------------------- files, text, 3-D

@@ -73,8 +73,21 @@ double SweepLikelihood::logLikelihood(
 			legCells.clear();
 			for (const auto& s : near)
 			{
-				const Eigen::Vector2d c = (s.corners[0] + s.corners[2]) / 2;
-				legCells.emplace_back(grid->index(c.x()), grid->index(c.y()));
+				// A leg's cell is its centre's; a wall's, every cell along its centre line.
+				Eigen::Vector2d a = (s.corners[0] + s.corners[2]) / 2, b = a;
+				if (s.table < 0)
+				{
+					const bool firstLonger =
+						(s.corners[1] - s.corners[0]).squaredNorm() >= (s.corners[2] - s.corners[1]).squaredNorm();
+					const auto mid = [&](int i, int j) -> Eigen::Vector2d { return (s.corners[i] + s.corners[j]) / 2; };
+					a = firstLonger ? mid(0, 3) : mid(0, 1), b = firstLonger ? mid(1, 2) : mid(2, 3);
+				}
+				const int n = static_cast<int>(std::ceil((b - a).norm() / (grid->cellSize() / 2)));
+				for (int k = 0; k <= n; k++)
+				{
+					const Eigen::Vector2d p = n ? Eigen::Vector2d(a + (b - a) * (double(k) / n)) : a;
+					legCells.emplace_back(grid->index(p.x()), grid->index(p.y()));
+				}
 			}
 			if (stop != w.sweep_start)
 				ll += sweptBoundary(

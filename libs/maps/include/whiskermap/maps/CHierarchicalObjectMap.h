@@ -154,8 +154,9 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	world::Table toWorldTable(const model::Table& t) const;
 	/** Per-pose mode: indices of the objects in the map (see mapObjects()). */
 	std::vector<size_t> supported() const;
-	/** Legs of mapTables(), as solids (cached until the map changes; thread-safe). */
-	const std::vector<world::Obstacle>& mappedLegs() const;
+	/** The legs of mapTables() and the walls of mapWalls(), as solids: what the sweep likelihood
+	 *  predicts contacts on (cached until the map changes; thread-safe). */
+	const std::vector<world::Obstacle>& mappedSolids() const;
 
 	// See base class docs
 	bool isEmpty() const override;
@@ -193,7 +194,7 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	uint64_t m_steps = 0;
 	int m_snapshotTemperature = -1;
 	StepSolver m_solver;
-	/** mappedLegs() cache; a copy starts empty (invalid). */
+	/** mappedSolids() cache; a copy starts empty (invalid). */
 	struct LegCache
 	{
 		std::vector<world::Obstacle> legs;
