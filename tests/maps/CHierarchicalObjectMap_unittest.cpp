@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <numeric>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/CMultiMetricMap.h>
@@ -438,4 +439,41 @@ TEST(CHierarchicalObjectMap, IgnoresOtherObservations)
 	EXPECT_FALSE(m.insertObservation(odo));
 	EXPECT_FALSE(m.canComputeObservationLikelihood(odo));
 	EXPECT_TRUE(m.isEmpty());
+}
+
+TEST(CHierarchicalObjectMap, RevisionsMovesAreCountedWithTheInsertions)
+{
+	// Very noisy sweeps run revisions after the insertion (noisy_revisions); their moves count
+	// in the insertion's tallies (summary.json's moves and move_types). Up to the first sweep
+	// that runs one, a map without revisions holds the same state and anneals the insertion
+	// the same way, so the difference is the revisions' own moves.
+	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/paper_arena/very-noisy.rawlog");
+	CHierarchicalObjectMap with, without;
+	without.insertionOptions.lasting.noisy_revisions = 0;
+	const auto sum = [](const auto& counts) { return std::accumulate(counts.begin(), counts.end(), uint64_t{0}); };
+	for (size_t i = 0; i < rawlog.sweeps.size(); i++)
+	{
+		const mrpt::poses::CPose3D p(rawlog.sweeps[i].robotPose);
+		with.insertObservation(*rawlog.sweeps[i].obs, p);
+		without.insertObservation(*rawlog.sweeps[i].obs, p);
+		const auto &a = with.lastLastingStats(), &b = without.lastLastingStats();
+		EXPECT_EQ(b.revisions, 0u);
+		if (a.revisions == 0)
+		{
+			ASSERT_EQ(a.proposed, b.proposed) << i;
+			continue;
+		}
+		EXPECT_GT(sum(a.proposed), sum(b.proposed));
+		for (size_t m = 0; m < a.proposed.size(); m++)
+		{
+			EXPECT_GE(a.proposed[m], b.proposed[m]) << m;
+			EXPECT_GE(a.accepted[m], b.accepted[m]) << m;
+		}
+		uint64_t byType = 0, acceptedByType = 0;
+		for (const auto& t : a.moveTypes) byType += t.proposed, acceptedByType += t.accepted;
+		EXPECT_EQ(byType, sum(a.proposed));
+		EXPECT_EQ(acceptedByType, sum(a.accepted));
+		return;
+	}
+	FAIL() << "no sweep ran a revision";
 }

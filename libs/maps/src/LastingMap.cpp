@@ -123,11 +123,19 @@ LastingMap::TStats LastingMap::insert(
 	TStats stats = solve(model, localSampler(sampler, m_options.schedule), m_options.visit_radius, seed, m_sampler);
 	if (model.cornersTighterThanReadings())
 		for (uint32_t k = 0; k < m_options.noisy_revisions; k++)
-			stats.revisions += reviseNext(model, sampler, seed ^ (0x9E3779B97F4A7C15ULL * (k + 1)));
+		{
+			TStats r;
+			if (!reviseNext(model, sampler, seed ^ (0x9E3779B97F4A7C15ULL * (k + 1)), r)) continue;
+			stats.revisions++;
+			for (size_t m = 0; m < inference::MOVE_COUNT; m++)
+				stats.proposed[m] += r.proposed[m], stats.accepted[m] += r.accepted[m];
+			inference::addTallies(stats.moveTypes, r.moveTypes);
+		}
 	return stats;
 }
 
-bool LastingMap::reviseNext(const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed)
+bool LastingMap::reviseNext(
+	const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed, TStats& out)
 {
 	// A scan of the stored contacts (bounded by contacts_per_leg a leg plus the unexplained
 	// ones): linear in the map, small against the anneal that follows (not measured apart).
@@ -146,7 +154,7 @@ bool LastingMap::reviseNext(const model::ModelParams& model, const inference::Sa
 	m_new = m_state.contactsOf(m_state.contact(pick).leg);
 	for (const model::Id c : m_new) m_reviseSeq = std::max(m_reviseSeq, m_state.contact(c).seq + 1);
 	// Every leg that could share a table with the revised one, every table that could hold it.
-	solve(model, sampler, std::max(m_options.visit_radius, model.maxDiagonal() + model.parent_gate), seed, m_reviser);
+	out = solve(model, sampler, std::max(m_options.visit_radius, model.maxDiagonal() + model.parent_gate), seed, m_reviser);
 	return true;
 }
 

@@ -64,7 +64,8 @@ class LastingMap
 	/** What one insertion did. */
 	struct TStats
 	{
-		uint32_t visited = 0, boardHypotheses = 0, boardContacts = 0;
+		uint32_t visited = 0, boardHypotheses = 0, boardContacts = 0;  ///< the insertion's local problem
+		/** Moves proposed and accepted, by kind: the insertion's anneal and its revisions'. */
 		std::array<uint32_t, inference::MOVE_COUNT> proposed{}, accepted{};
 		std::vector<inference::MoveTally> moveTypes;  ///< the same per move type
 		bool changed = false;  ///< the state was written (the sweep had contacts)
@@ -106,8 +107,9 @@ class LastingMap
 		std::unique_ptr<inference::BlackboardSampler>& cache);
 	/** One revision (TOptions::noisy_revisions): the problem around the explicit contacts of
 	 *  the leg holding the oldest explicit contact inserted at or after m_reviseSeq (from the
-	 *  oldest again when none is); false when no leg holds a contact. */
-	bool reviseNext(const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed);
+	 *  oldest again when none is), its figures into `out`; false when no leg holds a contact. */
+	bool reviseNext(
+		const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed, TStats& out);
 	/** Existence of each table of `solved` (grown from `start`, the region's board). */
 	std::vector<double> existence(
 		const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model);
