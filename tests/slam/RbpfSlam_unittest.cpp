@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 #include <mrpt/maps/CMultiMetricMap.h>
+#include <mrpt/math/wrap2pi.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/maps/MapConfig.h>
 #include <whiskermap/slam/RbpfSlam.h>
@@ -64,6 +65,12 @@ TEST_F(TSlamParamsTest, StrictKeysAndValues)
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\n[other]\n")), core::Error);
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nodometry_model = bumpy\n")), core::Error);
 	EXPECT_THROW(slam::TSlamParams::load(path("missing.ini")), core::Error);
+	// Exact odometry needs no [motion_model] (its matched model has zero noise); a noisy file
+	// without one is refused.
+	EXPECT_TRUE(slam::TSlamParams::load(ini("[slam]\nodometry_model = exact\n")).motion.matched_model);
+	std::ofstream(path("noisy.ini")) << "[odometry]\ntranslation_noise=0.05\nrotation_noise_deg=0\nturn_noise=0\n"
+										"turn_translation_noise=0\nscale_bias=0\n";
+	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nodometry_model = noisy.ini\n")), core::Error);
 }
 
 TEST(RbpfSlam, OnePosePerSweepFromTheKnownStart)
@@ -98,6 +105,23 @@ TEST(RbpfSlam, SameSeedSamePathOtherSeedOtherPath)
 	}
 	EXPECT_TRUE(same);
 	EXPECT_TRUE(other);
+}
+
+TEST_F(TSlamParamsTest, ExactOdometryModelFollowsTheOdometry)
+{
+	// With `odometry_model = exact` on an exact-odometry log (the paper arena's), every
+	// particle stays on the recorded path, the truth: SLAM maps at the true poses.
+	auto p = slam::TSlamParams::load(ini("[slam]\nodometry_model = exact\nparticles = 3\nmap_config = " + SRC +
+										 "/config/whisker-map.ini\n"));
+	auto sweeps = obs::RawlogReader::read(SRC + "/datasets/paper_arena/default.rawlog").sweeps;
+	sweeps.resize(60);
+	const auto path = run(p, sweeps);
+	ASSERT_EQ(path.size(), sweeps.size());
+	for (size_t i = 0; i < path.size(); i++)
+	{
+		EXPECT_LT(path[i].distanceTo(sweeps[i].robotPose), 1e-9) << "sweep " << i;
+		EXPECT_NEAR(mrpt::math::wrapToPi(path[i].phi() - sweeps[i].robotPose.phi()), 0, 1e-9) << "sweep " << i;
+	}
 }
 
 TEST(RbpfSlam, BestMapIsTheMapBuiltAtItsPath)

@@ -32,7 +32,11 @@ TSlamParams TSlamParams::load(const std::string& path)
 	const std::string mapConfig = besideIni(path, sec.text("map_config", "whisker-map.ini"));
 	p.map_config = fs::exists(mapConfig) ? mapConfig : core::ConfigPaths::find(mapConfig);
 	p.motion = world::OdometryNoise::load(besideIni(path, sec.text("odometry_model", "default")));
-	if (!p.motion.matched_model) sec.fail("odometry_model", "the odometry file has no [motion_model] section");
+	// Exact odometry without a [motion_model]: its matched model has zero noise, so the
+	// particles follow the odometry and SLAM maps at the recorded (true) poses.
+	if (!p.motion.matched_model && p.motion.exact()) p.motion.matched_model = true;
+	if (!p.motion.matched_model)
+		sec.fail("odometry_model", "the odometry file has no [motion_model] section and is not exact");
 	p.motion_noise_scale = sec.number("motion_noise_scale", p.motion_noise_scale, 0.01, 100);
 	p.resample_ess = sec.number("resample_ess", p.resample_ess, 0, 1);
 	const std::map<std::string, PF::TParticleResamplingAlgorithm> methods = {
