@@ -3,6 +3,7 @@
 
 #include <whiskermap/core/Error.h>
 #include <whiskermap/eval/TableCsv.h>
+#include <whiskermap/eval/TouchedWalls.h>
 #include <whiskermap/eval/WallEvaluation.h>
 
 #include <cmath>
@@ -54,6 +55,51 @@ TEST(WallEvaluation, RecallAndPrecisionByLength)
 	const auto none = WallEvaluation::compute({}, {}, 0.15, 20);
 	EXPECT_EQ(none.recall, 1.0);
 	EXPECT_EQ(none.precision, 1.0);
+}
+
+TEST(WallEvaluation, IntervalsUniteAndOverlap)
+{
+	WallEvaluation::Intervals a;
+	WallEvaluation::unite(a, 2, 3);
+	WallEvaluation::unite(a, 0, 1);
+	WallEvaluation::unite(a, 0.5, 2.2);  // joins both
+	WallEvaluation::unite(a, 4, 5);
+	ASSERT_EQ(a.size(), 2u);
+	EXPECT_EQ(a[0], WallEvaluation::Interval(0, 3));
+	EXPECT_EQ(a[1], WallEvaluation::Interval(4, 5));
+	EXPECT_DOUBLE_EQ(WallEvaluation::length(a), 4);
+	EXPECT_DOUBLE_EQ(WallEvaluation::overlap(a, {{-1, 0.5}, {2.5, 4.5}}), 0.5 + 0.5 + 0.5);
+	EXPECT_DOUBLE_EQ(WallEvaluation::overlap(a, {}), 0);
+}
+
+TEST(TouchedWalls, ContactsOnAWallMarkItsCentreLineNearThem)
+{
+	// Wall (0,0)-(4,0), 0.1 m thick; contact gate 0.1 m, spread 0.15 m.
+	auto w = wall(0, 0, 4, 0);
+	w.thickness = 0.1;
+	eval::TouchedWalls touched({w}, 0.1, 0.15);
+	touched.addContact(1, 0.05);  // on the north face: [0.85, 1.15]
+	touched.addContact(1.1, -0.06);  // 1 cm past the south face: [0.95, 1.25], merged
+	touched.addContact(3.95, 0);  // [3.8, 4] (clipped at the end)
+	touched.addContact(4.08, 0.1);  // 8 cm past the end, 5 cm off the face: [3.93, 4]
+	touched.addContact(2, 0.5);  // 45 cm off the face: not on the wall
+	touched.addContact(4.3, 0);  // 30 cm past the end: not on the wall
+	const auto& t = touched.intervals().at(0);
+	ASSERT_EQ(t.size(), 2u);
+	EXPECT_NEAR(t[0].first, 0.85, 1e-12);
+	EXPECT_NEAR(t[0].second, 1.25, 1e-12);
+	EXPECT_NEAR(t[1].first, 3.8, 1e-12);
+	EXPECT_EQ(t[1].second, 4.0);
+
+	// An estimated wall 5 cm off, over [0, 1]: it covers t in [0, 1 + sqrt(0.15^2 - 0.05^2)];
+	// of the 0.6 m touched it covers 1.141421 - 0.85.
+	const auto e = WallEvaluation::compute({w}, {wall(0, 0.05, 1, 0.05)}, 0.15, 20, &touched.intervals());
+	EXPECT_TRUE(e.touched_known);
+	EXPECT_NEAR(e.touched_length_m, 0.6, 1e-12);
+	EXPECT_NEAR(e.touched_covered_m, 1 + std::sqrt(0.02) - 0.85, 1e-12);
+	EXPECT_NEAR(e.recall_touched, (1 + std::sqrt(0.02) - 0.85) / 0.6, 1e-12);
+	EXPECT_NEAR(e.recall, (1 + std::sqrt(0.02)) / 4, 1e-12);  // of the whole wall
+	EXPECT_FALSE(WallEvaluation::compute({w}, {}, 0.15, 20).touched_known);
 }
 
 TEST(WallEvaluation, TrueWallsAreTheInteriorWallsThenTheArenaEdges)

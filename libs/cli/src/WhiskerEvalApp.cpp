@@ -5,6 +5,7 @@
 #include <whiskermap/core/Error.h>
 #include <whiskermap/eval/EvalReport.h>
 #include <whiskermap/eval/TableCsv.h>
+#include <whiskermap/eval/TouchedWalls.h>
 #include <whiskermap/obs/RawlogReader.h>
 #include <whiskermap/world/PathLog.h>
 
@@ -74,13 +75,10 @@ int run(const Options& o)
 	bool hasClass = false;
 	const auto estimated = eval::TableCsv::tables(eval::TableCsv::readMap(o.map, &hasClass));
 	report.map = eval::MapEvaluation::compute(w.tables, estimated, o.eval, hasClass);
+	std::vector<world::Wall> estimatedWalls;
 	if (!o.walls.empty())
-	{
-		std::vector<world::Wall> walls;
-		for (const auto& r : eval::TableCsv::readWalls(o.walls)) walls.push_back(r.wall);
-		report.walls = eval::WallEvaluation::compute(
-			eval::WallEvaluation::trueWalls(w), walls, o.eval.wall_gate, o.eval.gate_yaw_deg);
-	}
+		for (const auto& r : eval::TableCsv::readWalls(o.walls)) estimatedWalls.push_back(r.wall);
+	const auto trueWalls = eval::WallEvaluation::trueWalls(w);
 
 	// One streamed pass over the rawlog and the per-pose tables: memory bounded by the
 	// world and the map, not the log.
@@ -102,18 +100,26 @@ int run(const Options& o)
 	std::vector<world::Table> tables;
 	if (reader)
 	{
-		eval::Identifiability::Accumulator ident(w, eval::Identifiability::gateFor(reader->summary().maxSigmaR));
+		const double contactGate = eval::Identifiability::gateFor(reader->summary().maxSigmaR);
+		eval::Identifiability::Accumulator ident(w, contactGate);
+		eval::TouchedWalls touched(trueWalls, contactGate, o.eval.wall_gate);
 		obs::RawlogReader::Sweep s;
 		while (reader->next(s))
 		{
 			ident.add(s);
+			if (!o.walls.empty()) touched.add(s);
 			if (perPose && perPose->next(tables)) acc->add(tables, s.robotPose);
 		}
 		report.identifiability = ident.result();
+		if (!o.walls.empty())
+			report.walls = eval::WallEvaluation::compute(
+				trueWalls, estimatedWalls, o.eval.wall_gate, o.eval.gate_yaw_deg, &touched.intervals());
 	}
 	else if (perPose)
 		while (perPose->next(tables)) acc->add(tables, mrpt::poses::CPose2D());
 	if (acc) report.perPose = acc->result();
+	if (!o.walls.empty() && !report.walls)
+		report.walls = eval::WallEvaluation::compute(trueWalls, estimatedWalls, o.eval.wall_gate, o.eval.gate_yaw_deg);
 	if (o.calibration) report.calibration = EvalCalibration::ofMap(o.world, o.map, o.candidates, o.eval);
 	return print(o, report);
 }
@@ -141,7 +147,9 @@ int WhiskerEvalApp::main(int argc, char** argv)
 		"--walls", o.walls,
 		"Estimated walls CSV (map_walls.csv: x0,y0,x1,y1,thickness,existence), scored as written "
 		"against the world's interior walls and arena edges: length recall and precision "
-		"(see --wall-gate); needs --map");
+		"(see --wall-gate); needs --map. With --rawlog also the recall of the wall length the "
+		"whiskers touched (a contact within 3 sigma_r + 1 cm of a wall marks its centre line "
+		"within the wall gate of it)");
 	app.add_option(
 		"--per-pose", o.perPose,
 		"Per-pose MAP tables CSV (per_pose_tables.csv: pose,x,y,yaw_deg,length,width,"

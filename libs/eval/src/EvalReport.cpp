@@ -93,13 +93,19 @@ Fields classFields(const ClassFigures& c)
 
 Fields wallFields(const WallEvaluation& w)
 {
-	return {
+	Fields f{
 		{"gate_m", num(w.gate_m, 6)},
 		{"true_length_m", num(w.true_length_m, 6)},
 		{"estimated_length_m", num(w.estimated_length_m, 6)},
 		{"recall", num(w.recall, 6)},
 		{"precision", num(w.precision, 6)},
 	};
+	if (w.touched_known)
+	{
+		f.emplace_back("touched_length_m", num(w.touched_length_m, 6));
+		f.emplace_back("recall_touched", num(w.recall_touched, 6));
+	}
+	return f;
 }
 
 std::string trajectoryText(const TrajectoryEvaluation& t, const EvalOptions& o)
@@ -164,6 +170,13 @@ std::string EvalReport::toText() const
 			buf, sizeof(buf), "walls (gate %.3g m): %.3f m true, %.3f m estimated; length recall %.3f, precision %.3f\n",
 			walls->gate_m, walls->true_length_m, walls->estimated_length_m, walls->recall, walls->precision);
 		s += buf;
+		if (walls->touched_known)
+		{
+			std::snprintf(
+				buf, sizeof(buf), "walls touched by the whiskers: %.3f m; length recall on them %.3f\n",
+				walls->touched_length_m, walls->recall_touched);
+			s += buf;
+		}
 	}
 	if (trajectory) s += trajectoryText(*trajectory, options);
 	if (calibration) s += calibration->toText();

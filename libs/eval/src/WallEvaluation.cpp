@@ -12,7 +12,7 @@ namespace whiskermap::eval
 namespace
 {
 using Vec = Eigen::Vector2d;
-using Interval = std::pair<double, double>;  // [lo, hi] of the parameter t, empty if lo > hi
+using Interval = WallEvaluation::Interval;  // [lo, hi] of the parameter t, empty if lo > hi
 
 /** The t (|d| = 1, p(t) = a + t d) where p(t) lies within r of the point c. */
 Interval disc(const Vec& a, const Vec& d, const Vec& c, double r)
@@ -60,39 +60,71 @@ double direction(const world::Wall& w)
 }
 }  // namespace
 
-double WallEvaluation::coveredLength(
+WallEvaluation::Intervals WallEvaluation::coveredIntervals(
 	const world::Wall& wall, const std::vector<world::Wall>& others, double gate, double gateYawDeg)
 {
 	const Vec a(wall.x0, wall.y0);
 	const double L = wall.length();
 	const Vec d = (Vec(wall.x1, wall.y1) - a) / L;
-	std::vector<Interval> parts;
+	Intervals parts;
 	for (const auto& o : others)
 	{
 		if (core::rad2deg(std::abs(core::angleDiff(direction(o), direction(wall), M_PI))) > gateYawDeg) continue;
 		const Interval i = capsule(a, d, {o.x0, o.y0}, {o.x1, o.y1}, gate);
 		const double lo = std::max(0.0, i.first), hi = std::min(L, i.second);
-		if (lo < hi) parts.emplace_back(lo, hi);
+		if (lo < hi) unite(parts, lo, hi);
 	}
-	// Length of the union of the intervals.
-	std::sort(parts.begin(), parts.end());
-	double covered = 0, end = 0;
-	for (const auto& [lo, hi] : parts)
+	return parts;
+}
+
+double WallEvaluation::coveredLength(
+	const world::Wall& wall, const std::vector<world::Wall>& others, double gate, double gateYawDeg)
+{
+	return length(coveredIntervals(wall, others, gate, gateYawDeg));
+}
+
+double WallEvaluation::length(const Intervals& a)
+{
+	double sum = 0;
+	for (const auto& [lo, hi] : a) sum += hi - lo;
+	return sum;
+}
+
+double WallEvaluation::overlap(const Intervals& a, const Intervals& b)
+{
+	double sum = 0;
+	for (size_t i = 0, j = 0; i < a.size() && j < b.size();)
 	{
-		covered += std::max(0.0, hi - std::max(lo, end));
-		end = std::max(end, hi);
+		sum += std::max(0.0, std::min(a[i].second, b[j].second) - std::max(a[i].first, b[j].first));
+		(a[i].second < b[j].second ? i : j)++;
 	}
-	return covered;
+	return sum;
+}
+
+void WallEvaluation::unite(Intervals& a, double lo, double hi)
+{
+	auto first = std::lower_bound(a.begin(), a.end(), lo, [](const Interval& i, double x) { return i.second < x; });
+	auto last = first;
+	for (; last != a.end() && last->first <= hi; ++last) lo = std::min(lo, last->first), hi = std::max(hi, last->second);
+	a.insert(a.erase(first, last), {lo, hi});
 }
 
 WallEvaluation WallEvaluation::compute(
 	const std::vector<world::Wall>& truth, const std::vector<world::Wall>& estimated, double gate,
-	double gateYawDeg)
+	double gateYawDeg, const std::vector<Intervals>* touched)
 {
 	WallEvaluation e;
 	e.gate_m = gate;
-	for (const auto& w : truth)
-		e.true_length_m += w.length(), e.true_covered_m += coveredLength(w, estimated, gate, gateYawDeg);
+	e.touched_known = touched != nullptr;
+	for (size_t i = 0; i < truth.size(); i++)
+	{
+		const Intervals covered = coveredIntervals(truth[i], estimated, gate, gateYawDeg);
+		e.true_length_m += truth[i].length(), e.true_covered_m += length(covered);
+		if (!touched) continue;
+		e.touched_length_m += length(touched->at(i));
+		e.touched_covered_m += overlap(touched->at(i), covered);
+	}
+	if (e.touched_length_m > 0) e.recall_touched = e.touched_covered_m / e.touched_length_m;
 	for (const auto& w : estimated)
 		e.estimated_length_m += w.length(), e.estimated_covered_m += coveredLength(w, truth, gate, gateYawDeg);
 	if (e.true_length_m > 0) e.recall = e.true_covered_m / e.true_length_m;
