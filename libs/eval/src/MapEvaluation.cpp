@@ -17,6 +17,25 @@ std::vector<Eigen::Vector2d> centres(const std::vector<world::Table>& tables)
 	return c;
 }
 
+/** `e` as the same rectangle described the other way round (length and width swapped, yaw
+ *  turned by 90 degrees) when that description is closer to `t` in yaw (modulo 180 degrees)
+ *  and its sides are no worse by more than SIDE_TOLERANCE (summed): a 0.43 x 0.41 chair at
+ *  -90 degrees is a 0.41 x 0.43 chair at 0 (an inferred size makes near-square objects come
+ *  either way), while a 1.0 x 0.6 table turned by 90 degrees stays another rectangle. */
+world::Table orientedLike(const world::Table& e, const world::Table& t)
+{
+	constexpr double SIDE_TOLERANCE = 0.02;  // metres: the catalogue's size spread
+	const double sides = std::abs(e.length - t.length) + std::abs(e.width - t.width);
+	const double swappedSides = std::abs(e.width - t.length) + std::abs(e.length - t.width);
+	const double yaw = std::abs(core::angleDiff(e.yaw, t.yaw, M_PI));
+	const double swappedYaw = std::abs(core::angleDiff(e.yaw + M_PI_2, t.yaw, M_PI));
+	if (swappedSides > sides + SIDE_TOLERANCE || swappedYaw >= yaw) return e;
+	world::Table s = e;
+	std::swap(s.length, s.width);
+	s.yaw = core::wrapToPi(e.yaw + M_PI_2);
+	return s;
+}
+
 /** The gated candidate pairs (row: true, column: estimated) and their yaw errors, degrees. */
 struct Candidates
 {
@@ -34,10 +53,11 @@ Candidates candidates(
 	for (const auto& p : SparseAssignment::near(centres(truth), centres(estimated), widest))
 	{
 		const auto& t = truth[p.row];
-		const auto& e = estimated[p.col];
+		const auto e = orientedLike(estimated[p.col], t);
 		if (p.cost > MapEvaluation::gateFor(t, opts)) continue;
 		if (sameClass && e.object_class != t.object_class) continue;
-		const double period = t.length == t.width ? M_PI / 2 : M_PI;  // a square's symmetry
+		// a square's symmetry: the truth's, or the estimate's (its yaw is then known modulo 90)
+		const double period = t.length == t.width || e.length == e.width ? M_PI / 2 : M_PI;
 		const double yaw = core::rad2deg(std::abs(core::angleDiff(e.yaw, t.yaw, period)));
 		if (yaw > opts.gate_yaw_deg) continue;
 		c.pairs.push_back(p);
@@ -62,7 +82,8 @@ ClassFigures classFigures(
 	for (size_t i = 0; i < truth.size(); i++)
 	{
 		if (truthMatch[i] < 0) continue;
-		const auto &t = truth[i], &e = estimated[truthMatch[i]];
+		const auto& t = truth[i];
+		const auto e = orientedLike(estimated[truthMatch[i]], t);
 		dl += std::abs(e.length - t.length), dw += std::abs(e.width - t.width);
 		dlw += std::abs(e.leg_width - t.leg_width), n++;
 	}
