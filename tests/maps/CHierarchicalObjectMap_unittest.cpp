@@ -143,6 +143,15 @@ TEST(CHierarchicalObjectMap, OfficeConfigNamesTheObjectCatalogue)
 	EXPECT_EQ(map->modelParams.classCount(), 4);
 	mrpt::maps::CMultiMetricMap plain(maps::MapConfig::load(CONFIG));
 	EXPECT_TRUE(plain.mapByClass<CHierarchicalObjectMap>()->modelParams.classes.empty());
+	EXPECT_TRUE(map->modelParams.size_moves);  // office-map.ini infers sizes (eq. 24)
+	EXPECT_FALSE(plain.mapByClass<CHierarchicalObjectMap>()->modelParams.size_moves);
+	// size_moves (eq. 24) needs the catalogue: without one the config is refused by name.
+	std::ifstream in(CONFIG);
+	std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+	const std::string model = "[MetricMap_hierarchicalObjectMap_00_model]\n";
+	ASSERT_NE(text.find(model), std::string::npos);
+	text.replace(text.find(model), model.size(), model + "size_moves = true\n");
+	EXPECT_NE(configError(text).find("size_moves: needs an object catalogue"), std::string::npos) << configError(text);
 }
 
 TEST(CHierarchicalObjectMap, ConfigMistakesFailLoudly)

@@ -112,16 +112,18 @@ TEST(SweptGridMap, VersionFourStreamsLoadWithoutTheGrid)
 	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
 	ASSERT_EQ(bytes[0], static_cast<uint8_t>(name.size() | 0x80));
 	ASSERT_EQ(std::string(bytes.begin() + 1, bytes.begin() + 1 + static_cast<long>(name.size())), name);
-	ASSERT_EQ(bytes[1 + name.size()], 7);
+	ASSERT_EQ(bytes[1 + name.size()], 8);
 	bytes[1 + name.size()] = 4;
 	// version 5's tail: swept_cell, free_space, cell_prior, cell_prior_sweeps, p_unexplored,
 	// the grid's cell edge and count, 12 bytes a cell; version 6's sigma_corner,
 	// noisy_revisions and revision round robin's insertion number; version 7's move types
-	// (a count, then per type a length byte, the name and two 8-byte counts); then MRPT's end flag
+	// (a count, then per type a length byte, the name and two 8-byte counts); version 8's
+	// size_moves and four size offsets per lasting table; then MRPT's end flag
 	size_t moveTypes = 4;
 	for (const auto& t : a.moveTypes()) moveTypes += 1 + t.name.size() + 8 + 8;
 	ASSERT_GT(a.moveTypes().size(), 5u);
-	const size_t tail = 8 + 1 + 8 + 8 + 8 + 8 + 4 + 12 * a.sweptGrid().cells().size() + 8 + 4 + 8 + moveTypes;
+	const size_t sizes = 1 + 32 * a.lastingMap().state().tableCount();
+	const size_t tail = 8 + 1 + 8 + 8 + 8 + 8 + 4 + 12 * a.sweptGrid().cells().size() + 8 + 4 + 8 + moveTypes + sizes;
 	bytes.erase(bytes.end() - 1 - static_cast<long>(tail), bytes.end() - 1);
 	const auto old = read(bytes);
 	ASSERT_TRUE(old);
@@ -189,13 +191,52 @@ TEST(SweptGridMap, MoveTypeCountsAddUpAndAreReadStrictly)
 	size_t section = 4;
 	for (const auto& t : a.moveTypes()) section += 1 + t.name.size() + 8 + 8;
 	const std::vector<uint8_t> good = bytesOf(a);
-	const size_t at = good.size() - 1 - section;  // the section's type count, before MRPT's end flag
+	const size_t sizes = 1 + 32 * a.lastingMap().state().tableCount();  // version 8's section, after it
+	const size_t at = good.size() - 1 - sizes - section;  // the section's type count
 	std::vector<uint8_t> bad = good;
 	bad[at] = 65, bad[at + 1] = bad[at + 2] = bad[at + 3] = 0;  // little-endian 65
 	EXPECT_THROW(read(bad), std::exception);
 	bad = good;
-	const size_t lastAccepted = good.size() - 1 - 8;
+	const size_t lastAccepted = good.size() - 1 - sizes - 8;
 	bad[lastAccepted + 7] = 0x7f;  // the last type's acceptances far above its proposals
 	EXPECT_THROW(read(bad), std::exception);
 	EXPECT_TRUE(read(good));
+}
+
+// Version 8: size moves and each lasting table's size offsets survive a round trip; a
+// non-finite offset is refused.
+TEST(SweptGridMap, TableSizesRoundTripAndAreReadStrictly)
+{
+	CHierarchicalObjectMap a;
+	model::ObjectClass table;  // the paper arena's table as the one class
+	a.modelParams.classes = {table};
+	a.modelParams.size_moves = true;
+	insert(a, 0, 200);
+	const auto& s = a.lastingMap().state();
+	ASSERT_GT(s.tableCount(), 0u);
+	bool resized = false;
+	for (model::Id t = 0; t < s.tableIdBound(); t++)
+		if (s.hasTable(t)) resized |= s.table(t).d_length != 0;
+	EXPECT_TRUE(resized);  // the arena's tables are the class's size; their fits move by noise
+	const std::vector<uint8_t> good = bytesOf(a);
+	const auto back = read(good);
+	ASSERT_TRUE(back);
+	EXPECT_TRUE(back->modelParams.size_moves);
+	const auto& r = back->lastingMap().state();
+	ASSERT_EQ(r.tableCount(), s.tableCount());
+	for (model::Id t = 0, u = 0; t < s.tableIdBound(); t++)
+	{
+		if (!s.hasTable(t)) continue;
+		while (!r.hasTable(u)) u++;
+		EXPECT_EQ(r.table(u).d_length, s.table(t).d_length);
+		EXPECT_EQ(r.table(u).d_width, s.table(t).d_width);
+		EXPECT_EQ(r.reported(u).d_width, s.reported(t).d_width);
+		u++;
+	}
+	ASSERT_EQ(back->mapTables().size(), a.mapTables().size());
+	for (size_t i = 0; i < a.mapTables().size(); i++) EXPECT_EQ(back->mapTables()[i].length, a.mapTables()[i].length);
+	std::vector<uint8_t> bad = good;
+	const double nan = std::nan("");
+	std::memcpy(&bad[bad.size() - 1 - 8], &nan, 8);  // the last table's reported width offset
+	EXPECT_THROW(read(bad), std::exception);
 }

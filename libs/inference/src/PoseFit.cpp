@@ -102,6 +102,39 @@ model::Leg fitLeg(
 	return l;
 }
 
+model::Table fitTableSize(
+	const model::ModelParams& p, const model::Table& start, const model::Leg* const* legs, const int* corners,
+	size_t n)
+{
+	const auto [sn, c] = core::cachedSinCos(start.theta);
+	const double w = 1 / sq(p.sigma_corner), k = 1 / sq(p.sizeSigmaOf(start.cls)), count = static_cast<double>(n);
+	// Per axis (0: length, along x; 1: width, along y): sums of s_i, u_i and s_i u_i.
+	double S[2] = {0, 0}, U[2] = {0, 0}, SU[2] = {0, 0};
+	for (size_t i = 0; i < n; i++)
+	{
+		const double dx = legs[i]->x - start.x, dy = legs[i]->y - start.y;
+		const double u[2] = {c * dx + sn * dy, -sn * dx + c * dy};
+		const double s[2] = {corners[i] == 0 || corners[i] == 3 ? 1.0 : -1.0, corners[i] < 2 ? 1.0 : -1.0};
+		for (int a = 0; a < 2; a++) S[a] += s[a], U[a] += u[a], SU[a] += s[a] * u[a];
+	}
+	const double nominal[2] = {p.lengthOf(start.cls), p.widthOf(start.cls)};
+	double offset[2], spacing[2];
+	for (int a = 0; a < 2; a++)
+	{
+		// eqs. 6 + 24: [n w, w S/2; w S/2, n w/4 + k] [offset; spacing] = [w U; w SU/2 + k b_k]
+		const double m00 = count * w, m01 = w * S[a] / 2, m11 = count * w / 4 + k;
+		const double r0 = w * U[a], r1 = w * SU[a] / 2 + k * nominal[a], det = m00 * m11 - m01 * m01;
+		offset[a] = (m11 * r0 - m01 * r1) / det;
+		spacing[a] = (m00 * r1 - m01 * r0) / det;
+	}
+	model::Table t = start;
+	t.x = start.x + c * offset[0] - sn * offset[1];
+	t.y = start.y + sn * offset[0] + c * offset[1];
+	t.d_length = spacing[0] - nominal[0];
+	t.d_width = spacing[1] - nominal[1];
+	return t;
+}
+
 model::Table fitTable(
 	const model::ModelParams& p, const model::Table& start, const model::Leg* const* legs, const int* corners,
 	size_t n)

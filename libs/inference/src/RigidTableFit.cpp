@@ -38,7 +38,7 @@ model::Table fitRigidTable(const model::LastingState& s, model::Id t, const mode
 		ox += cx, oy += cy, n++;
 	}
 	if (n > 0) ox /= n, oy /= n;  // pivot in the table frame
-	const double reach = std::hypot(p.lengthOf(best.cls), p.widthOf(best.cls)) / 2;  // a turn moves corners at most this much
+	const double reach = std::hypot(p.lengthOf(best), p.widthOf(best)) / 2;  // a turn moves corners at most this much
 	auto turned = [&](model::Table c, double d) {
 		const double c0 = std::cos(c.theta), s0 = std::sin(c.theta), c1 = std::cos(c.theta + d), s1 = std::sin(c.theta + d);
 		c.x += (c0 - c1) * ox - (s0 - s1) * oy;  // the pivot stays where it was

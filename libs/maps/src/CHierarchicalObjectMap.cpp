@@ -34,7 +34,7 @@ CHierarchicalObjectMap::CHierarchicalObjectMap() = default;
 world::Table CHierarchicalObjectMap::toWorldTable(const model::Table& t) const
 {
 	return world::Table{
-		t.x, t.y, core::angleDiff(t.theta, 0, M_PI), modelParams.lengthOf(t.cls), modelParams.widthOf(t.cls),
+		t.x, t.y, core::angleDiff(t.theta, 0, M_PI), modelParams.lengthOf(t), modelParams.widthOf(t),
 		t.leg_width, t.texture, world::ObjectClass(modelParams.nameOf(t.cls))};
 }
 

@@ -3,7 +3,8 @@
 // without a known shaft; versions before 3 with the lasting tables reported at their own poses;
 // versions before 4 without walls (walls = false); versions before 5 with an empty swept grid
 // (the likelihood then knows no free space); versions before 6 with sigma_corner = sigma_r and
-// no revisions; versions before 7 without the counts per move type.
+// no revisions; versions before 7 without the counts per move type; versions before 8 without
+// size moves (every lasting table at its class's size).
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/model/ObjectCatalogue.h>
@@ -242,9 +243,36 @@ void readSwept(CArchive& in, model::SweptGrid& g)
 		g.set(c.ix, c.iy, c.cell);
 	}
 }
+
+/** Version 8: size moves, and each lasting table's size offsets and its reported table's. */
+void writeSizes(CArchive& out, const model::ModelParams& m, const model::LastingState& s)
+{
+	out << m.size_moves;
+	for (model::Id t = 0; t < s.tableIdBound(); t++)
+		if (s.hasTable(t))
+			out << s.table(t).d_length << s.table(t).d_width << s.reported(t).d_length << s.reported(t).d_width;
+}
+
+void readSizes(CArchive& in, model::ModelParams& m, LastingParts& parts)
+{
+	in >> m.size_moves;
+	if (m.size_moves && m.classes.empty())
+		THROW_EXCEPTION("CHierarchicalObjectMap: corrupt model (size moves without an object catalogue)");
+	for (size_t i = 0; i < parts.tables.size(); i++)
+	{
+		auto& t = parts.tables[i];
+		in >> t.d_length >> t.d_width;
+		double rl, rw;
+		in >> rl >> rw;
+		if (i < parts.reported.size()) parts.reported[i].d_length = rl, parts.reported[i].d_width = rw;
+		for (const double v : {t.d_length, t.d_width, rl, rw})
+			if (!std::isfinite(v) || std::abs(v) > 100)
+				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (table size offset not finite or above 100 m)");
+	}
+}
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 7; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 8; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -300,6 +328,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	out << m.sigma_corner << l.noisy_revisions << m_lasting.reviseSeq();
 	// Version 7: the counts per move type.
 	writeMoveTypes(out, m_moveTypes);
+	// Version 8: size moves and the lasting tables' sizes.
+	writeSizes(out, m, m_lasting.state());
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -314,6 +344,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 5:
 		case 6:
 		case 7:
+		case 8:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -372,13 +403,6 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 			m.wall_thickness = noWalls.wall_thickness;
 			std::vector<model::LastingState::StoredWall> walls;
 			if (version >= 4) readWalls(in, m, walls);
-			if (version >= 1)
-			{
-				m_lasting.state().restore(
-					lasting.tables, lasting.existence, lasting.reported, lasting.legs, lasting.evidence, lasting.contacts,
-					lasting.seq, m);
-				m_lasting.state().restoreWalls(walls);
-			}
 			if (version >= 5)
 			{
 				auto& sw = likelihoodOptions.sweep;
@@ -395,6 +419,15 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 				m_lasting.setReviseSeq(in.ReadAs<uint64_t>());  // any value is valid (a round robin's start)
 			}
 			if (version >= 7) readMoveTypes(in, m_moveTypes);  // older streams: none (internal_clear above)
+			m.size_moves = false;  // versions before 8: every table at its class's size
+			if (version >= 8) readSizes(in, m, lasting);
+			if (version >= 1)
+			{
+				m_lasting.state().restore(
+					lasting.tables, lasting.existence, lasting.reported, lasting.legs, lasting.evidence, lasting.contacts,
+					lasting.seq, m);
+				m_lasting.state().restoreWalls(walls);
+			}
 			if (!(m.sigma_corner > 0) || !std::isfinite(m.sigma_corner))
 				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt model (sigma_corner not a positive number)");
 			m_consolidator.setObjects(std::move(objs));

@@ -27,12 +27,22 @@ double logCell(double logDensity, const ModelParams& p)
 double logTablePrior(const ModelParams& p) { return core::cachedLog(p.c_T); }  // eq. 4
 
 // eq. 4 with the class: c_T P(class); exactly c_T without a catalogue (log 1 = 0)
-double logTablePrior(const Table& t, const ModelParams& p) { return core::cachedLog(p.c_T) + std::log(p.priorOf(t.cls)); }
+double logTablePrior(const Table& t, const ModelParams& p)
+{
+	return core::cachedLog(p.c_T) + std::log(p.priorOf(t.cls)) + logSizePrior(t, p);
+}
+
+// eq. 24: -(d_length^2 + d_width^2) / (2 size_sigma^2); exactly -0 at the nominal size
+double logSizePrior(const Table& t, const ModelParams& p)
+{
+	if (p.classes.empty()) return 0;
+	return -(sq(t.d_length) + sq(t.d_width)) / (2 * sq(p.sizeSigmaOf(t.cls)));
+}
 
 void tableCorner(const Table& t, int i, const ModelParams& p, double& x, double& y)
 {
-	const double lx = (i == 0 || i == 3 ? 0.5 : -0.5) * p.lengthOf(t.cls);
-	const double ly = (i < 2 ? 0.5 : -0.5) * p.widthOf(t.cls);
+	const double lx = (i == 0 || i == 3 ? 0.5 : -0.5) * p.lengthOf(t);
+	const double ly = (i < 2 ? 0.5 : -0.5) * p.widthOf(t);
 	const auto [s, c] = core::cachedSinCos(t.theta);
 	x = t.x + c * lx - s * ly;
 	y = t.y + s * lx + c * ly;
@@ -41,7 +51,7 @@ void tableCorner(const Table& t, int i, const ModelParams& p, double& x, double&
 void tableCorners(const Table& t, const ModelParams& p, double x[4], double y[4])
 {
 	const auto [s, c] = core::cachedSinCos(t.theta);
-	const double hl = 0.5 * p.lengthOf(t.cls), hw = 0.5 * p.widthOf(t.cls);  // -0.5 * v is -(0.5 * v) exactly
+	const double hl = 0.5 * p.lengthOf(t), hw = 0.5 * p.widthOf(t);  // -0.5 * v is -(0.5 * v) exactly
 	for (int i = 0; i < 4; i++)
 	{
 		const double lx = i == 0 || i == 3 ? hl : -hl;
@@ -65,7 +75,7 @@ int nearestCorner(const double x[4], const double y[4], double px, double py, do
 
 OrientedRect tableRect(const Table& t, const ModelParams& p)
 {
-	return {t.x, t.y, t.theta, p.lengthOf(t.cls) / 2, p.widthOf(t.cls) / 2};
+	return {t.x, t.y, t.theta, p.lengthOf(t) / 2, p.widthOf(t) / 2};
 }
 
 OrientedRect legRect(const Leg& l) { return {l.x, l.y, l.theta, l.wx / 2, l.wy / 2}; }

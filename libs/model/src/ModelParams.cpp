@@ -38,6 +38,7 @@ ModelParams ModelParams::fromIni(core::IniSection& sec)
 	p.wall_length_scale = sec.number("wall_length_scale", p.wall_length_scale, 1e-3, 1e6);
 	p.wall_thickness = sec.number("wall_thickness", p.wall_thickness, 1e-3, 10);
 	const std::string objects = sec.text("objects", "");
+	p.size_moves = sec.boolean("size_moves", p.size_moves);
 	sec.finish();
 	if (!objects.empty())
 	{
@@ -45,6 +46,7 @@ ModelParams ModelParams::fromIni(core::IniSection& sec)
 		const auto dir = std::filesystem::path(sec.fileLabel()).parent_path();
 		p.classes = ObjectCatalogue::load(rel.is_absolute() ? objects : (dir / rel).string());
 	}
+	if (p.size_moves && p.classes.empty()) sec.fail("size_moves", "needs an object catalogue (the key objects)");
 	if (p.leg_width >= std::min(p.table_length, p.table_width))
 		sec.fail("leg_width", "must be smaller than table_length and table_width");
 	return p;
@@ -71,7 +73,7 @@ bool ModelParams::operator==(const ModelParams& o) const
 			p.sigma_r, p.sigma_theta, p.sigma_w, p.sigma_tau, p.sigma_corner, p.shaft_noise, p.sigma_across, p.c_T, p.c_L, p.c_S,
 			p.alpha_L, p.alpha_S, p.epsilon, p.delta, p.table_length, p.table_width, p.leg_width, p.texture,
 			p.parent_gate, p.free_space, p.free_space_p_miss, p.walls, p.c_W, p.wall_length_scale, p.wall_thickness,
-			p.classes);
+			p.classes, p.size_moves);
 	};
 	return tie(*this) == tie(o);
 }

@@ -175,6 +175,12 @@ MoveRegistry::MoveRegistry(const model::ModelParams& p)
 		{"leg pose search", Target::Leg, Slot::PolishLastSweep, 1,
 		 [](MoveContext& c, Id l) { c.count(Move::Refit, searchLegPose(c.bb, l, 1e-9) > 0); }},
 	};
+	if (p.size_moves)  // without size moves every table has its class's size, draw for draw as before
+	{
+		const auto resize = std::make_shared<TableRefit>(true);
+		m_entries.push_back({"table resize", Target::Table, Slot::Refit, 1,
+							 [=](MoveContext& c, Id t) { tryMove(c, *resize, [&] { return resize->propose(c, t); }); }});
+	}
 	if (!p.walls) return;  // without walls the sweep is the paper's, draw for draw
 	const auto walls = std::make_shared<WallBirthDeath>(p);
 	const auto wallRefit = std::make_shared<WallRefit>();

@@ -2,6 +2,7 @@
 #include <whiskermap/model/Posterior.h>
 
 #include <cmath>
+#include <limits>
 
 namespace whiskermap::inference::moves
 {
@@ -22,11 +23,15 @@ Proposal TableClassSwitch::switchTo(MoveContext& ctx, model::Id t, int to)
 	const double before = model::logJointAround(ctx.bb, t);
 	model::Table now = m_old;
 	now.cls = to;
+	now.d_length = now.d_width = 0;  // snapped to the new class's size
 	now.leg_width = ctx.mp.legWidthOf(to);
 	now.texture = ctx.mp.textureOf(to);
 	ctx.bb.setTable(t, now);
 	Proposal p{Move::Refit, model::logJointAround(ctx.bb, t) - before};
 	p.logForward = p.logReverse = -std::log(static_cast<double>(ctx.mp.classCount() - 1));
+	// A resized table (size_moves) is snapped to the nominal size: switching back does not
+	// restore its own size, so that switch has no reverse.
+	if (m_old.d_length != 0 || m_old.d_width != 0) p.logReverse = -std::numeric_limits<double>::infinity();
 	return p;
 }
 

@@ -26,7 +26,12 @@ std::optional<Proposal> TableRefit::propose(MoveContext& ctx, Id t)
 		for (const auto& [l, saved] : m_savedLegs)
 			if (bb.explains(l)) m_fitLegs.push_back(&bb.leg(l)), m_fitCorners.push_back(bb.leg(l).corner);
 		if (m_fitLegs.empty()) return std::nullopt;  // nothing to fit (and nothing changed yet)
-		bb.setTable(t, fitTable(ctx.mp, m_old, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size()));
+		// The plain refit fits the pose from the old table both rounds; the resize from its
+		// own last fit, whose size it changed.
+		const model::Table& start = m_resize && round > 0 ? bb.table(t) : m_old;
+		model::Table fit = fitTable(ctx.mp, start, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
+		if (m_resize) fit = fitTableSize(ctx.mp, fit, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
+		bb.setTable(t, fit);
 		for (const auto& [l, saved] : m_savedLegs)
 		{
 			model::Leg fit;
@@ -36,7 +41,9 @@ std::optional<Proposal> TableRefit::propose(MoveContext& ctx, Id t)
 		}
 	}
 	const model::Table& now = bb.table(t);
-	double logReverse = now.x == m_old.x && now.y == m_old.y && now.theta == m_old.theta ? 0 : -std::numeric_limits<double>::infinity();
+	const bool same = now.x == m_old.x && now.y == m_old.y && now.theta == m_old.theta &&
+					  now.d_length == m_old.d_length && now.d_width == m_old.d_width;
+	double logReverse = same ? 0 : -std::numeric_limits<double>::infinity();
 	for (const auto& [l, saved] : m_savedLegs)
 	{
 		if (!bb.explains(l))

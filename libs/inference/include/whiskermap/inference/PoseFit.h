@@ -50,6 +50,16 @@ model::Table fitTable(
 	const model::ModelParams& p, const model::Table& start, const model::Leg* const* legs, const int* corners,
 	size_t n);
 
+/** The size and centre of `start` (its yaw kept) best fitting `n` >= 1 legs standing at
+ *  `corners` under eq. 6's corner noise and eq. 24's size prior: along each of the table's
+ *  axes, centre offset a and spacing b minimise
+ *  sum_i (u_i - a - s_i b / 2)^2 / sigma_corner^2 + (b - b_k)^2 / size_sigma_k^2, with u_i a
+ *  leg's coordinate along the axis, s_i = +-1 its corner's side and b_k the class's nominal
+ *  spacing (a 2 x 2 linear system; legs on one side only leave b at b_k). Needs a catalogue. */
+model::Table fitTableSize(
+	const model::ModelParams& p, const model::Table& start, const model::Leg* const* legs, const int* corners,
+	size_t n);
+
 /** Greedy compass search over a leg's (x, y, yaw): moves of +-step in x and y and +-10 step
  *  (radians) in yaw, from a quarter of `legWidth` down to 0.1 mm, keeping any move that
  *  raises `score(leg)` by more than `tolerance`. `value` is score(leg) on entry; `leg`

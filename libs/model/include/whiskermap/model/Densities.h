@@ -22,8 +22,12 @@ double logCell(double logDensity, const ModelParams& p);
 
 /** Flat table prior p(T) = c_T (eq. 4). */
 double logTablePrior(const ModelParams& p);
-/** The same with the table's class: c_T P(class) (eq. 4 with the catalogue's class prior). */
+/** The same with the table's class and size: c_T P(class) (eq. 4 with the catalogue's class
+ *  prior) times eq. 24's size term. */
 double logTablePrior(const Table& t, const ModelParams& p);
+/** The size prior relative to the class's nominal size (eq. 24):
+ *  -(d_length^2 + d_width^2) / (2 size_sigma^2); 0 without a catalogue. */
+double logSizePrior(const Table& t, const ModelParams& p);
 
 /** Centre of corner i in 0..3 of a table (its class's length and width): (+,+), (-,+), (-,-), (+,-) in the table frame. */
 void tableCorner(const Table& t, int i, const ModelParams& p, double& x, double& y);

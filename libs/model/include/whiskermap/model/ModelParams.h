@@ -1,6 +1,7 @@
 #pragma once
 #include <whiskermap/core/IniSection.h>
 #include <whiskermap/model/ObjectClass.h>
+#include <whiskermap/model/Table.h>
 
 #include <string>
 #include <vector>
@@ -60,6 +61,11 @@ struct ModelParams
 	double textureOf(int k) const { return classes.empty() ? texture : classes[k].texture; }
 	double priorOf(int k) const { return classes.empty() ? 1.0 : classes[k].prior; }
 	std::string nameOf(int k) const { return classes.empty() ? "table" : classes[k].label; }
+	/** A table's own leg-centre spacings: its class's plus its offsets. */
+	double lengthOf(const Table& t) const { return lengthOf(t.cls) + t.d_length; }
+	double widthOf(const Table& t) const { return widthOf(t.cls) + t.d_width; }
+	/** Spread of a class's length and width about its nominal ones (eq. 24); 0 without a catalogue. */
+	double sizeSigmaOf(int k) const { return classes.empty() ? 0.0 : classes[k].size_sigma; }
 	/** Largest footprint diagonal and length over the classes (search radii, hash cells). */
 	double maxDiagonal() const;
 	double maxLength() const;
@@ -77,6 +83,11 @@ struct ModelParams
 	double c_W = 1e-7;  ///< wall prior density per (x, y, yaw, length) (eq. 23)
 	double wall_length_scale = 5.0;  ///< lambda_W of eq. 23's exponential length prior, metres
 	double wall_thickness = 0.1;  ///< thickness of every wall hypothesis (one class), metres
+
+	/** Dimension moves (issue 11, eq. 24: doc/model.md, "Object sizes"; optional key, needs
+	 *  `objects`): each table's length and width are inferred about its class's nominal ones
+	 *  with the class's size_sigma; off: every table has its class's size. */
+	bool size_moves = false;
 
 	/** Reads every key of `sec` (all required but the optional shaft-noise, free-space, wall and
 	 *  objects keys; `objects` is read with ObjectCatalogue::load) and calls

@@ -6,9 +6,10 @@
 namespace whiskermap::inference::moves
 {
 /** Class switch of a table (doc/sampler.md, "Moves"): another class of the catalogue, drawn
- *  uniformly among the K - 1 others, with the table's centre and yaw kept and its leg width
- *  and texture set to the new class's. Its own reverse: switching back is drawn with the same
- *  probability 1 / (K - 1), so logForward = logReverse. Judged on the exact change of
+ *  uniformly among the K - 1 others, with the table's centre and yaw kept and its leg width,
+ *  texture and size set to the new class's. Its own reverse: switching back is drawn with the
+ *  same probability 1 / (K - 1), so logForward = logReverse (a table resized off its class's
+ *  size has no reverse: switching back snaps it to the nominal size, logReverse = -inf). Judged on the exact change of
  *  logJoint around the table (logJointAround: its class prior, eq. 4; its legs, eqs. 5-6;
  *  its factors and overlaps, eqs. 15-17, 21). */
 class TableClassSwitch

@@ -11,16 +11,20 @@ namespace whiskermap::inference::moves
  *  that explain shapelets, then refit those legs to their contacts and new corners), then
  *  its invented legs onto its corners. Judged on the exact change of logJoint
  *  (logJointAround). Deterministic (logForward = 0) with no reverse (logReverse = -inf)
- *  unless nothing moved (0). */
+ *  unless nothing moved (0). The resize (model key `size_moves`) is the same move with the
+ *  table's size fitted too, after its pose, in each round (fitTableSize: eqs. 6 and 24). */
 class TableRefit
 {
    public:
+	explicit TableRefit(bool resize = false) : m_resize(resize) {}
+
 	/** nullopt (board unchanged) if no leg of t explains a shapelet or a leg's fit leaves
 	 *  the gate. */
 	std::optional<Proposal> propose(MoveContext& ctx, model::Id t);
 	void finish(MoveContext& ctx, bool accepted);
 
    private:
+	bool m_resize;
 	model::Id m_table = model::NONE;
 	model::Table m_old;
 	std::vector<std::pair<model::Id, model::Leg>> m_savedLegs;
