@@ -29,7 +29,9 @@ double wallGap(const world::World& w, const world::Table& t)
 	return g;
 }
 
-std::map<std::string, int> classes(const world::World& w)
+/** The objects per class; each object's length and width within `jitter` of its class's
+ *  (exactly its class's when 0). */
+std::map<std::string, int> classes(const world::World& w, double jitter = 0)
 {
 	std::map<std::string, int> n;
 	for (const auto& t : w.tables)
@@ -37,8 +39,12 @@ std::map<std::string, int> classes(const world::World& w)
 		n[t.object_class.str()]++;
 		const auto c = t.object_class.str();
 		const double length = c == "desk" ? 1.4 : c == "chair" ? 0.42 : 1.0, width = c == "desk" ? 0.7 : c == "chair" ? 0.42 : 0.6;
-		EXPECT_EQ(t.length, length) << c;
-		EXPECT_EQ(t.width, width) << c;
+		EXPECT_NEAR(t.length, length, jitter + 1e-9) << c;
+		EXPECT_NEAR(t.width, width, jitter + 1e-9) << c;
+		if (jitter == 0)
+		{
+			EXPECT_EQ(t.length, length) << c;
+		}
 		EXPECT_EQ(t.leg_width, c == "chair" ? 0.03 : 0.05) << c;
 	}
 	return n;
@@ -57,6 +63,13 @@ TEST(WorldGeneratorWalls, ShippedWorldsObeyTheirCategory)
 		for (const auto& t : walls.tables) EXPECT_GE(wallGap(walls, t), 0.15 - 1e-9);
 		EXPECT_EQ(mixed.walls.size(), 0u);
 		EXPECT_EQ(classes(mixed), (std::map<std::string, int>{{"chair", 4}, {"desk", 2}, {"table", 2}}));
+		// sized_classes: mixed_classes's objects at their own sizes, within 3 cm of their class's.
+		const auto sized = shipped("sized_classes", seed);
+		EXPECT_EQ(classes(sized, 0.03), (std::map<std::string, int>{{"chair", 4}, {"desk", 2}, {"table", 2}}));
+		const auto nominal = std::count_if(sized.tables.begin(), sized.tables.end(), [](const world::Table& t) {
+			return t.length == 1.0 || t.length == 1.4 || t.length == 0.42;
+		});
+		EXPECT_LE(nominal, 1);  // a 1 mm grid in +-3 cm: a nominal length is a 1 in 61 chance
 		EXPECT_EQ(near.walls.size(), 2u);
 		EXPECT_EQ(classes(near), (std::map<std::string, int>{{"chair", 3}, {"desk", 2}, {"table", 2}}));
 		for (const auto& t : near.tables)

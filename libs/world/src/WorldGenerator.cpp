@@ -25,6 +25,7 @@ struct Spec
 	int desks, chairs;  ///< free-standing desks and chairs (after the tables)
 	int walls;  ///< random interior walls
 	double wallMin, wallMax;  ///< every object's footprint gap to the nearest wall, metres
+	double sizeJitter = 0;  ///< each object's length and width drawn within +- this of its class's, metres
 };
 constexpr double WALL_MARGIN = 0.15;  ///< footprint to wall, metres
 const Spec SPECS[] = {
@@ -37,6 +38,8 @@ const Spec SPECS[] = {
 	{"walls", 5, 6, 0, 0.30, INFINITY, 12, 0, 0, 3, WALL_MARGIN, INFINITY},
 	{"mixed_classes", 5, 2, 0, 0.30, INFINITY, 12, 2, 4, 0, WALL_MARGIN, INFINITY},
 	{"near_walls", 5, 2, 0, 0.30, INFINITY, 12, 2, 3, 2, 0.05, 0.25},
+	// Issue 11: objects of their own sizes about their classes' (the catalogue's size_sigma, 2 cm)
+	{"sized_classes", 5, 2, 0, 0.30, INFINITY, 12, 2, 4, 0, WALL_MARGIN, INFINITY, 0.03},
 };
 constexpr double WALL_THICKNESS = 0.1, WALL_GAP = 0.8;  ///< interior walls; smallest gap between two, metres
 constexpr double FACING_MIN = 0.105, FACING_MAX = 0.195;  ///< facing leg centres of a pair, metres
@@ -146,7 +149,13 @@ std::optional<World> layout(const Spec& spec, mrpt::random::CRandomGenerator& rn
 		bool placed = false;
 		for (int tries = 0; tries < 1000 && !placed; tries++)
 		{
-			const auto unit = drawUnit(w, u < spec.pairs, cls, rng);
+			auto unit = drawUnit(w, u < spec.pairs, cls, rng);
+			if (spec.sizeJitter > 0)  // other categories draw exactly as before
+				for (auto& t : unit)
+				{
+					t.length = mm(t.length + rng.drawUniform(-spec.sizeJitter, spec.sizeJitter));
+					t.width = mm(t.width + rng.drawUniform(-spec.sizeJitter, spec.sizeJitter));
+				}
 			if ((placed = fits(w, unit, spec))) w.tables.insert(w.tables.end(), unit.begin(), unit.end());
 		}
 		if (!placed) return std::nullopt;

@@ -19,8 +19,9 @@ namespace whiskermap::world
  *  Categories: random_yaw, clutter, side_by_side, large (grid paths) and sparse (a path that
  *  touches one leg at a time, so that no `window` consecutive contacts hold two legs of one
  *  table, checked with the simulator's truth at every noise level given); issue 11's walls
- *  (random interior walls), mixed_classes (tables, desks and chairs at random yaw) and
- *  near_walls (both, every object 5-25 cm from a wall), on grid paths. */
+ *  (random interior walls), mixed_classes (tables, desks and chairs at random yaw),
+ *  near_walls (both, every object 5-25 cm from a wall) and sized_classes (mixed_classes with
+ *  each object's length and width within +-3 cm of its class's), on grid paths. */
 class WorldGenerator
 {
    public:
