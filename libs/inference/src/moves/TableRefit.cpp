@@ -29,9 +29,9 @@ std::optional<Proposal> TableRefit::propose(MoveContext& ctx, Id t)
 		// The plain refit fits the pose from the old table both rounds; the resize from its
 		// own last fit, whose size it changed.
 		const model::Table& start = m_resize && round > 0 ? bb.table(t) : m_old;
-		model::Table fit = fitTable(ctx.mp, start, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
-		if (m_resize) fit = fitTableSize(ctx.mp, fit, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
-		bb.setTable(t, fit);
+		model::Table fitted = fitTable(ctx.mp, start, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
+		if (m_resize) fitted = fitTableSize(ctx.mp, fitted, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
+		bb.setTable(t, fitted);
 		for (const auto& [l, saved] : m_savedLegs)
 		{
 			model::Leg fit;
