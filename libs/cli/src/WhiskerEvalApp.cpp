@@ -98,28 +98,27 @@ int run(const Options& o)
 		acc.emplace(w.tables, o.eval, reader.has_value());
 	}
 	std::vector<world::Table> tables;
+	std::optional<eval::TouchedWalls> touched;  // with --walls and --rawlog
 	if (reader)
 	{
 		const double contactGate = eval::Identifiability::gateFor(reader->summary().maxSigmaR);
 		eval::Identifiability::Accumulator ident(w, contactGate);
-		eval::TouchedWalls touched(trueWalls, contactGate, o.eval.wall_gate);
+		if (!o.walls.empty()) touched.emplace(trueWalls, contactGate, o.eval.wall_gate);
 		obs::RawlogReader::Sweep s;
 		while (reader->next(s))
 		{
 			ident.add(s);
-			if (!o.walls.empty()) touched.add(s);
+			if (touched) touched->add(s);
 			if (perPose && perPose->next(tables)) acc->add(tables, s.robotPose);
 		}
 		report.identifiability = ident.result();
-		if (!o.walls.empty())
-			report.walls = eval::WallEvaluation::compute(
-				trueWalls, estimatedWalls, o.eval.wall_gate, o.eval.gate_yaw_deg, &touched.intervals());
 	}
 	else if (perPose)
 		while (perPose->next(tables)) acc->add(tables, mrpt::poses::CPose2D());
 	if (acc) report.perPose = acc->result();
-	if (!o.walls.empty() && !report.walls)
-		report.walls = eval::WallEvaluation::compute(trueWalls, estimatedWalls, o.eval.wall_gate, o.eval.gate_yaw_deg);
+	if (!o.walls.empty())
+		report.walls = eval::WallEvaluation::compute(
+			trueWalls, estimatedWalls, o.eval.wall_gate, o.eval.gate_yaw_deg, touched ? &touched->intervals() : nullptr);
 	if (o.calibration) report.calibration = EvalCalibration::ofMap(o.world, o.map, o.candidates, o.eval);
 	return print(o, report);
 }

@@ -223,9 +223,7 @@ void CHierarchicalObjectMap::insertLasting(const obs::CObservationWhiskerContact
 	m_steps++;
 	m_lasting.setOptions(insertionOptions.lasting);
 	m_lastLasting = m_lasting.insert(in.shapelets, in.model, samplerParams, in.seed);
-	for (size_t k = 0; k < inference::MOVE_COUNT; k++)
-		m_proposed[k] += m_lastLasting.proposed[k], m_accepted[k] += m_lastLasting.accepted[k];
-	inference::addTallies(m_moveTypes, m_lastLasting.moveTypes);
+	inference::addMoveCounts(m_proposed, m_accepted, m_moveTypes, m_lastLasting);
 	if (insertionOptions.keep_history)
 	{
 		m_shapelets.insert(m_shapelets.end(), in.shapelets.begin(), in.shapelets.end());
@@ -263,9 +261,7 @@ TStepInput CHierarchicalObjectMap::prepareStep(
 
 void CHierarchicalObjectMap::integrateStep(TStepInput in, inference::StepResult result)
 {
-	for (size_t k = 0; k < inference::MOVE_COUNT; k++)
-		m_proposed[k] += result.proposed[k], m_accepted[k] += result.accepted[k];
-	inference::addTallies(m_moveTypes, result.moveTypes);
+	inference::addMoveCounts(m_proposed, m_accepted, m_moveTypes, result);
 	TPoseRecord rec;
 	rec.pose = in.pose;
 	rec.logPosterior = result.logPosterior;

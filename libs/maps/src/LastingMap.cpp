@@ -127,9 +127,7 @@ LastingMap::TStats LastingMap::insert(
 			TStats r;
 			if (!reviseNext(model, sampler, seed ^ (0x9E3779B97F4A7C15ULL * (k + 1)), r)) continue;
 			stats.revisions++;
-			for (size_t m = 0; m < inference::MOVE_COUNT; m++)
-				stats.proposed[m] += r.proposed[m], stats.accepted[m] += r.accepted[m];
-			inference::addTallies(stats.moveTypes, r.moveTypes);
+			inference::addMoveCounts(stats.proposed, stats.accepted, stats.moveTypes, r);
 		}
 	return stats;
 }

@@ -16,7 +16,7 @@ namespace whiskermap::eval
 class TouchedWalls
 {
    public:
-	TouchedWalls(std::vector<world::Wall> walls, double contactGate, double spread);
+	TouchedWalls(const std::vector<world::Wall>& walls, double contactGate, double spread);
 
 	void add(const obs::RawlogReader::Sweep& sweep);
 	void addContact(double x, double y);
@@ -25,7 +25,12 @@ class TouchedWalls
 	const std::vector<WallEvaluation::Intervals>& intervals() const { return m_touched; }
 
    private:
-	std::vector<world::Wall> m_walls;
+	/** A wall's centre line: its start, unit direction and length, and half its thickness. */
+	struct Line
+	{
+		double x0, y0, ux, uy, length, halfThickness;
+	};
+	std::vector<Line> m_lines;
 	double m_gate, m_spread;
 	std::vector<WallEvaluation::Intervals> m_touched;
 };

@@ -32,6 +32,15 @@ struct MoveTally
 /** Adds `from`'s tallies to `into`'s by name (appending names `into` lacks, in `from`'s order). */
 void addTallies(std::vector<MoveTally>& into, const std::vector<MoveTally>& from);
 
+/** Adds the move counts of `from` (anything with `proposed` and `accepted` per kind of move
+ *  and `moveTypes`: a StepResult, a lasting insertion's figures) to running totals. */
+template <class Counts, class From>
+void addMoveCounts(Counts& proposed, Counts& accepted, std::vector<MoveTally>& types, const From& from)
+{
+	for (size_t k = 0; k < MOVE_COUNT; k++) proposed[k] += from.proposed[k], accepted[k] += from.accepted[k];
+	addTallies(types, from.moveTypes);
+}
+
 /** What one time step of the sampler found. */
 struct StepResult
 {
