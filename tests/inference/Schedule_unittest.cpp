@@ -54,6 +54,7 @@ TEST(SamplerParams, ShippedConfigEqualsBuiltInDefaults)
 	EXPECT_EQ(f.leg_position_noise, d.leg_position_noise);
 	EXPECT_EQ(f.leg_angle_noise, d.leg_angle_noise);
 	EXPECT_EQ(f.acceptance, d.acceptance);
+	EXPECT_EQ(f.proposals, d.proposals);
 }
 
 TEST(SamplerParams, BadKeysFail)
@@ -82,4 +83,9 @@ TEST(SamplerParams, BadKeysFail)
 	EXPECT_EQ(rule("reversible_jump"), inference::AcceptanceRule::ReversibleJump);
 	EXPECT_THROW(rule("metropolis"), core::Error);
 	EXPECT_THROW(rule("Gibbs"), core::Error);
+	// `proposals` is optional: data-driven unless the broad baseline is asked for by name.
+	EXPECT_EQ(load(text).proposals, inference::Proposals::DataDriven);
+	EXPECT_EQ(load(text + "proposals=broad\n").proposals, inference::Proposals::Broad);
+	EXPECT_EQ(load(text + "proposals=data_driven\n").proposals, inference::Proposals::DataDriven);
+	EXPECT_THROW(load(text + "proposals=uniform\n"), core::Error);
 }

@@ -48,6 +48,7 @@ StepResult BlackboardSampler::anneal(const model::Blackboard& start, uint64_t se
 	m_ctx.result = &result;
 	m_rng.seed(seed);
 	associate();
+	m_ctx.changed();
 	checkpoint(result);  // the map as it was, with the new contacts associated: the first candidate
 	result.initialLogPosterior = result.logPosterior;
 	run(result, seed ^ 0x5DEECE66Dull, snapshotTemperature);
@@ -211,7 +212,9 @@ void BlackboardSampler::prune()
 		if (m_bb.hasTable(t) && !m_tableSupported[t]) m_bb.removeTable(t);
 	for (Id w = 0; w < m_bb.wallIdBound(); w++)
 		if (m_bb.hasWall(w) && !m_bb.wallExplains(w)) m_bb.removeWall(w);
-	if (m_bb.legCount() + m_bb.tableCount() + m_bb.wallCount() != before) m_scoredAfter = NOT_SCORED;
+	if (m_bb.legCount() + m_bb.tableCount() + m_bb.wallCount() == before) return;
+	m_scoredAfter = NOT_SCORED;
+	m_ctx.changed();
 }
 
 // The wall whose link gain for unexplained shapelet s (eq. 22 against the null cause) beats

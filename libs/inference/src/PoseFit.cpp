@@ -167,11 +167,12 @@ model::Table fitTable(
 	return t;
 }
 
-double searchLegPose(model::Blackboard& bb, model::Id l, double tolerance)
+double searchLegPose(model::Blackboard& bb, model::Id l, double tolerance, uint64_t* evaluations)
 {
 	model::Leg best = bb.leg(l);
 	const double start = model::logOddsLeg(bb, l);
 	const double value = compassSearch(best, bb.params().leg_width, start, tolerance, [&](const model::Leg& c) {
+		if (evaluations) ++*evaluations;
 		bb.setLeg(l, c);
 		return model::logOddsLeg(bb, l);
 	});

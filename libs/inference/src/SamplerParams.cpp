@@ -26,6 +26,11 @@ SamplerParams SamplerParams::fromIni(core::IniSection& sec)
 		p.acceptance = AcceptanceRule::ReversibleJump;
 	else if (rule != "gibbs")
 		sec.fail("acceptance", "must be gibbs or reversible_jump, not '" + rule + "'");
+	const std::string proposals = sec.text("proposals", "data_driven");
+	if (proposals == "broad")
+		p.proposals = Proposals::Broad;
+	else if (proposals != "data_driven")
+		sec.fail("proposals", "must be data_driven or broad, not '" + proposals + "'");
 	sec.finish();
 	return p;
 }

@@ -105,6 +105,8 @@ double LegBirthDeath::logBirthDensity(const MoveContext& ctx, size_t s, const Le
 {
 	const obs::Shapelet& sh = ctx.bb.shapelets()[s];
 	const double w = ctx.mp.leg_width, nx = std::cos(sh.normal), ny = std::sin(sh.normal);
+	if (ctx.broad())  // centre uniform on the disc of radius w about s, yaw uniform (mod 2 pi)
+		return std::hypot(leg.x - sh.x, leg.y - sh.y) <= w ? -std::log(M_PI * w * w) - std::log(2 * M_PI) : NO_REVERSE;
 	const double sigma = ctx.sp.leg_position_noise, dx = leg.x - sh.x, dy = leg.y - sh.y;
 	const double normal = dx * nx + dy * ny + w / 2, along = -dx * ny + dy * nx;
 	double fixed = 0;

@@ -10,7 +10,9 @@ std::optional<Proposal> LegRefit::propose(MoveContext& ctx, model::Id l)
 	m_old = ctx.bb.leg(l);
 	Proposal p{Move::Refit};
 	if (!ctx.refitInPlace(l, p.logTarget)) return std::nullopt;
-	p.logReverse = logReverseOfRefit(m_old, ctx.bb.leg(l));
+	// A closed-form refit has a reverse only where it leaves the leg; a random-walk step
+	// (broad proposals) is symmetric.
+	p.logReverse = ctx.broad() ? 0 : logReverseOfRefit(m_old, ctx.bb.leg(l));
 	return p;
 }
 

@@ -51,6 +51,17 @@ Leg MoveContext::newLegFor(size_t s)
 {
 	const obs::Shapelet& sh = bb.shapelets()[s];
 	const double w = mp.leg_width, nx = std::cos(sh.normal), ny = std::sin(sh.normal);
+	if (broad())
+	{
+		const double r = w * std::sqrt(rng.uniform()), bearing = 2 * M_PI * rng.uniform();
+		Leg l;
+		l.x = sh.x + r * std::cos(bearing);
+		l.y = sh.y + r * std::sin(bearing);
+		l.theta = 2 * M_PI * rng.uniform();
+		l.wx = l.wy = w;
+		l.texture = sh.texture;
+		return l;
+	}
 	double along = 0;
 	if (!adjacentFaceOffset(s, along)) along = (rng.uniform() - 0.5) * w;
 	Leg l;
@@ -104,7 +115,13 @@ bool MoveContext::fittedLeg(Id l, const model::Table* t, Leg& out)
 		model::tableCorner(*t, model::logLegGivenTable(leg, *t, mp).corner, mp, qx, qy);
 		pull = mp.cornerPull();
 	}
-	out = fitLeg(mp, m_contacts.data(), m_contacts.size(), t, qx, qy, pull, &evidence);
+	if (broad())
+	{
+		out = leg;
+		randomWalk(out.x, out.y, out.theta);
+	}
+	else
+		out = fitLeg(mp, m_contacts.data(), m_contacts.size(), t, qx, qy, pull, &evidence);
 	out.parent = leg.parent;
 	const model::OrientedRect r = model::legRect(out);
 	for (const obs::Shapelet* s : m_contacts)
@@ -124,11 +141,20 @@ bool MoveContext::refitInPlace(Id l, double& gain)
 }
 bool MoveContext::atFit(Id l)
 {
+	if (broad()) return false;
 	Leg fit;
 	const Leg& leg = bb.leg(l);
 	if (!fittedLeg(l, leg.parent == model::NONE ? nullptr : &bb.table(leg.parent), fit)) return true;
 	constexpr double EPS = 1e-12;
 	return std::abs(fit.x - leg.x) <= EPS && std::abs(fit.y - leg.y) <= EPS && std::abs(fit.theta - leg.theta) <= EPS &&
 		   std::abs(fit.texture - leg.texture) <= EPS;
+}
+
+void MoveContext::randomWalk(double& x, double& y, double& theta)
+{
+	const double scale = rng.uniform() < 0.5 ? 1 : 10;
+	x += scale * sp.leg_position_noise * rng.gaussian();
+	y += scale * sp.leg_position_noise * rng.gaussian();
+	theta += scale * sp.leg_angle_noise * rng.gaussian();
 }
 }  // namespace whiskermap::inference::moves

@@ -171,9 +171,15 @@ MoveRegistry::MoveRegistry(const model::ModelParams& p)
 		 [=](MoveContext& c, Id l) { tryMove(c, *legRefit, [&] { return legRefit->propose(c, l); }); }},
 		{"table for leg", Target::Leg, Slot::Parent, 1,
 		 [=](MoveContext& c, Id l) { c.judge(*tables, tables->birth(c, l)); }},
-		// Greedy compass search of the leg's pose on its exact local log-odds (PoseFit.h).
+		// Greedy compass search of the leg's pose on its exact local log-odds (PoseFit.h); an
+		// optimiser, not a proposal: the broad baseline goes without it.
 		{"leg pose search", Target::Leg, Slot::PolishLastSweep, 1,
-		 [](MoveContext& c, Id l) { c.count(Move::Refit, searchLegPose(c.bb, l, 1e-9) > 0); }},
+		 [](MoveContext& c, Id l) {
+			 if (c.broad()) return;
+			 const bool better = searchLegPose(c.bb, l, 1e-9, &c.result->poseEvaluations) > 0;
+			 c.count(Move::Refit, better);
+			 if (better) c.changed();
+		 }},
 	};
 	if (p.size_moves)  // without size moves every table has its class's size, draw for draw as before
 	{

@@ -30,7 +30,7 @@ Proposal TableBirthDeath::death(MoveContext& ctx, Id t)
 // factor (eq. 21, 1 when off) of the legs it implies at its four corners: 8 tables with the
 // leg at one of 4 corners in one of the 2 yaws (mod pi) consistent with the leg's yaw (mod
 // pi/2), for each class of the catalogue, and the pair tables (each class whose corner
-// distances fit the pair).
+// distances fit the pair). Broad proposals: the 8 tables per class only, drawn uniformly.
 Table TableBirthDeath::drawCandidate(MoveContext& ctx, Id l, double& logProbability)
 {
 	constexpr double ADOPT_WEIGHT = 4;
@@ -38,13 +38,14 @@ Table TableBirthDeath::drawCandidate(MoveContext& ctx, Id l, double& logProbabil
 	for (int k = 0; k < ctx.mp.classCount(); k++)
 		for (int i = 0; i < 8; i++)
 			m_tables.push_back(tableWithLegAt(ctx.mp, ctx.bb.leg(l), i / 2, i % 2 ? M_PI_2 : 0.0, k));
-	tablesForPairs(ctx.bb, l, m_tables);
+	if (!ctx.broad()) tablesForPairs(ctx.bb, l, m_tables);
 	m_weights.clear();
 	double total = 0;
 	for (const Table& t : m_tables)
 		total += m_weights.emplace_back(
-			std::pow(ADOPT_WEIGHT, static_cast<double>(adoptable(ctx.bb, t, l, m_candidates))) *
-			std::exp(ctx.bb.swept().logEmptyCorners(t, {0, 0, 0, 0}, ctx.mp)));
+			ctx.broad() ? 1.0
+						: std::pow(ADOPT_WEIGHT, static_cast<double>(adoptable(ctx.bb, t, l, m_candidates))) *
+							  std::exp(ctx.bb.swept().logEmptyCorners(t, {0, 0, 0, 0}, ctx.mp)));
 	size_t choice = 0;
 	for (double u = ctx.rng.uniform() * total; choice + 1 < m_tables.size() && u >= m_weights[choice]; choice++)
 		u -= m_weights[choice];
@@ -58,7 +59,8 @@ Proposal TableBirthDeath::birth(MoveContext& ctx, Id l)
 {
 	model::Blackboard& bb = ctx.bb;
 	Proposal p{Move::Parent};
-	// The chosen table, fitted to all the legs it adopts (PoseFit.h), then adopting anew.
+	// The chosen table, fitted to all the legs it adopts (PoseFit.h; not with broad
+	// proposals), then adopting anew.
 	Table chosen = drawCandidate(ctx, l, p.logForward);
 	adoptable(bb, chosen, l, m_candidates);  // fills m_candidates with the adopted legs
 	m_candidates.push_back(l);
@@ -69,7 +71,7 @@ Proposal TableBirthDeath::birth(MoveContext& ctx, Id l)
 		m_fitLegs.push_back(&bb.leg(a));
 		m_fitCorners.push_back(model::logLegGivenTable(bb.leg(a), chosen, ctx.mp).corner);
 	}
-	if (m_candidates.size() > 1) chosen = fitTable(ctx.mp, chosen, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
+	if (m_candidates.size() > 1 && !ctx.broad()) chosen = fitTable(ctx.mp, chosen, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
 	adoptable(bb, chosen, l, m_candidates);
 	m_candidates.push_back(l);
 

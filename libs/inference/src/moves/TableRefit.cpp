@@ -29,6 +29,13 @@ std::optional<Proposal> TableRefit::propose(MoveContext& ctx, Id t)
 		// The plain refit fits the pose from the old table both rounds; the resize from its
 		// own last fit, whose size it changed.
 		const model::Table& start = m_resize && round > 0 ? bb.table(t) : m_old;
+		if (ctx.broad())  // one random-walk step of the table; its legs stay (broad proposals)
+		{
+			model::Table stepped = m_old;
+			ctx.randomWalk(stepped.x, stepped.y, stepped.theta);
+			bb.setTable(t, stepped);
+			break;
+		}
 		model::Table fitted = fitTable(ctx.mp, start, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
 		if (m_resize) fitted = fitTableSize(ctx.mp, fitted, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
 		bb.setTable(t, fitted);
@@ -43,7 +50,7 @@ std::optional<Proposal> TableRefit::propose(MoveContext& ctx, Id t)
 	const model::Table& now = bb.table(t);
 	const bool same = now.x == m_old.x && now.y == m_old.y && now.theta == m_old.theta &&
 					  now.d_length == m_old.d_length && now.d_width == m_old.d_width;
-	double logReverse = same ? 0 : -std::numeric_limits<double>::infinity();
+	double logReverse = same || ctx.broad() ? 0 : -std::numeric_limits<double>::infinity();
 	for (const auto& [l, saved] : m_savedLegs)
 	{
 		if (!bb.explains(l))

@@ -8,6 +8,8 @@
 #include <whiskermap/model/Blackboard.h>
 #include <whiskermap/model/ModelParams.h>
 
+#include <functional>
+#include <utility>
 #include <vector>
 
 namespace whiskermap::inference
@@ -45,6 +47,11 @@ class BlackboardSampler
 	const model::Blackboard& best() const { return m_best; }
 
 	const SamplerParams& params() const { return m_params; }
+
+	/** For benchmarks: `w(board, counts so far)` is called after every change of the board
+	 *  that stays (an accepted proposal, a search that improved a pose, the association, a
+	 *  prune that removed something) in the steps and anneals that follow; empty: none. */
+	void watch(std::function<void(const model::Blackboard&, const StepResult&)> w) { m_ctx.watcher = std::move(w); }
 
    private:
 	/** The schedule, the coldest sweeps and the polish from the current board. */

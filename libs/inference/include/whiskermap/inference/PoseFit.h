@@ -7,6 +7,7 @@
 #include <whiskermap/obs/Shapelet.h>
 
 #include <cstddef>
+#include <cstdint>
 
 namespace whiskermap::inference
 {
@@ -84,7 +85,8 @@ double compassSearch(model::Leg& leg, double legWidth, double value, double tole
 }
 
 /** compassSearch of leg `l`'s pose on its exact local log-odds (eq. 20: the rest of the board
- *  does not depend on its pose); the best pose is left on the board. Returns the gain (>= 0).
- *  Used by the sampler's polish and the exact oracle's rebuilt boards. */
-double searchLegPose(model::Blackboard& bb, model::Id l, double tolerance);
+ *  does not depend on its pose); the best pose is left on the board. Returns the gain (>= 0)
+ *  and adds the poses it scored to `*evaluations` if given. Used by the sampler's polish and
+ *  the exact oracle's rebuilt boards. */
+double searchLegPose(model::Blackboard& bb, model::Id l, double tolerance, uint64_t* evaluations = nullptr);
 }  // namespace whiskermap::inference

@@ -11,6 +11,13 @@ enum class AcceptanceRule
 	ReversibleJump,  ///< Green 1995: min(1, (p'/p)^beta q(reverse) / q(forward) |J|)
 };
 
+/** Where the moves put what they propose (doc/sampler.md, "Broad proposals"). */
+enum class Proposals
+{
+	DataDriven,  ///< contacts on faces, closed-form fits, pair tables, adoption weights, pose search
+	Broad,  ///< the baseline: poses drawn near the contact or as random-walk steps, nothing fitted
+};
+
 /** Settings of the annealed blackboard sampler (Algorithm 1). Defaults and reasons:
  *  config/whisker-map.ini [MetricMap_hierarchicalObjectMap_00_sampler], doc/sampler.md. */
 struct SamplerParams
@@ -37,8 +44,10 @@ struct SamplerParams
 	double leg_angle_noise = 0.02;  ///< std-dev of a new leg's yaw, radians
 	/** Key `acceptance` (optional): `gibbs` (default) or `reversible_jump`. */
 	AcceptanceRule acceptance = AcceptanceRule::Gibbs;
+	/** Key `proposals` (optional): `data_driven` (default) or `broad` (issue 10's baseline). */
+	Proposals proposals = Proposals::DataDriven;
 
-	/** Reads every key of `sec` (all required but `acceptance`; the schedule as beta_start,
+	/** Reads every key of `sec` (all required but `acceptance` and `proposals`; the schedule as beta_start,
 	 *  beta_end, temperatures) and calls sec.finish(); throws core::Error. */
 	static SamplerParams fromIni(core::IniSection& sec);
 };

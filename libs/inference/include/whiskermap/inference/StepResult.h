@@ -55,6 +55,8 @@ struct StepResult
 	std::array<uint32_t, MOVE_COUNT> accepted{};
 	/** The same counts per move type, in the registry's order (doc/sampler.md, "Moves"). */
 	std::vector<MoveTally> moveTypes;
+	/** Leg poses the polish's pose search scored (each of its searches counts once above). */
+	uint64_t poseEvaluations = 0;
 	/** The blackboard after the requested temperature index (figs. 1-2), if asked for. */
 	std::optional<model::HypothesisSet> snapshot;
 

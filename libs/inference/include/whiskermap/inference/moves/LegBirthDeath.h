@@ -29,7 +29,8 @@ class LegBirthDeath
 	/** log density of birthFor(s) proposing `leg`'s pose (x, y, yaw): yaw ~ N(normal,
 	 *  leg_angle_noise^2), the centre half a width inward along -normal plus N(0, noise^2 I),
 	 *  offset along the face uniform on [-w/2, w/2] (or fixed by an adjacent contact). A
-	 *  zero noise makes that coordinate deterministic: its factor is left out. */
+	 *  zero noise makes that coordinate deterministic: its factor is left out. Broad
+	 *  proposals: uniform on the disc of radius leg_width about s and on the yaw. */
 	static double logBirthDensity(const MoveContext& ctx, size_t s, const model::Leg& leg);
 
    private:

@@ -8,7 +8,8 @@ namespace whiskermap::inference::moves
 /** Refit of a leg (doc/sampler.md, "Moves"): the closed-form pose for its contacts and its
  *  parent's corner (PoseFit.h). Deterministic (logForward = 0) and idempotent, so no move
  *  proposes the old pose back: logReverse = -inf unless the pose did not change (0). The
- *  polish uses it as a greedy improvement, where densities play no part. */
+ *  polish uses it as a greedy improvement, where densities play no part. With broad
+ *  proposals it is a symmetric random-walk step (MoveContext::randomWalk; logReverse = 0). */
 class LegRefit
 {
    public:

@@ -6,6 +6,7 @@
 #include <whiskermap/model/Blackboard.h>
 
 #include <cmath>
+#include <functional>
 #include <vector>
 
 namespace whiskermap::inference
@@ -37,7 +38,17 @@ class MoveContext
 	size_t entry = NO_ENTRY;
 	static constexpr size_t NO_ENTRY = ~size_t{0};
 
+	/** Benchmarks (proposals until the MAP): called after every change the sampler keeps. */
+	std::function<void(const model::Blackboard&, const StepResult&)> watcher;
+
 	bool greedy() const { return std::isinf(beta); }
+	/** The broad baseline (SamplerParams::proposals, doc/sampler.md "Broad proposals"). */
+	bool broad() const { return sp.proposals == Proposals::Broad; }
+	/** Tells the watcher (if any) that the board changed and the change stays. */
+	void changed()
+	{
+		if (watcher) watcher(bb, *result);
+	}
 
 	/** Counts `p` and judges it with the sampler's acceptance at `beta`. */
 	bool accept(const Proposal& p);
@@ -50,10 +61,12 @@ class MoveContext
 	{
 		const bool yes = accept(p);
 		move.finish(*this, yes);
+		if (yes) changed();
 		return yes;
 	}
 
-	/** A new free leg for shapelet s, with s on its face (Q(pa(S)), doc/sampler.md). */
+	/** A new free leg for shapelet s, with s on its face (Q(pa(S)), doc/sampler.md); broad:
+	 *  its centre uniform within one leg width of s, its yaw uniform. */
 	model::Leg newLegFor(size_t s);
 	/** Where along its face the contact of shapelet s lies, from the leg centre, when another
 	 *  shapelet nearby fixes it (adjacent faces of one leg): true and `offset`; else false
@@ -62,15 +75,20 @@ class MoveContext
 	/** Legs whose perimeter is within the parent gate of shapelet `s`. */
 	void legsNearShapelet(size_t s, std::vector<model::Id>& out) const;
 	/** Closed-form pose (PoseFit.h) of leg `l` for its contacts and, with `t`, the corner of
-	 *  `t` nearest to it. False if there is nothing to fit or the fit leaves a contact or the
-	 *  corner outside the parent gate. */
+	 *  `t` nearest to it (broad: a randomWalk step from its pose). False if there is nothing
+	 *  to fit or the fit leaves a contact or the corner outside the parent gate. */
 	bool fittedLeg(model::Id l, const model::Table* t, model::Leg& out);
 	/** Moves leg l to its fitted pose (if valid: returns true) and adds the change of logJoint
 	 *  to `gain` (local, eq. 20 before and after). */
 	bool refitInPlace(model::Id l, double& gain);
 	/** True if refitInPlace would leave leg l where it is (to 1e-12; an invalid fit leaves it):
-	 *  then a move that refits l can be undone by a move that refits it back. */
+	 *  then a move that refits l can be undone by a move that refits it back. Broad: false
+	 *  (a random-walk step always moves). */
 	bool atFit(model::Id l);
+	/** The broad proposals' symmetric random-walk step of a pose: with probability 1/2 a
+	 *  small step (N(0, leg_position_noise^2) per axis, N(0, leg_angle_noise^2) in yaw), else
+	 *  one ten times larger. */
+	void randomWalk(double& x, double& y, double& theta);
 
    private:
 	const Acceptance& m_acceptance;

@@ -16,7 +16,8 @@ namespace whiskermap::inference::moves
  *    and explain data and nothing was removed (logReverse = 0); otherwise none (-inf);
  *  - death(t): removes t and its legs that explain nothing (logForward = 0). logReverse =
  *    -inf: the birth proposes fitted poses only, so it proposes a given table with density 0
- *    in general (an approximation: exact unless t's pose is itself such a fit). */
+ *    in general (an approximation: exact unless t's pose is itself such a fit).
+ *  Broad proposals: the 8 single-leg tables per class only, drawn uniformly, not fitted. */
 class TableBirthDeath
 {
    public:

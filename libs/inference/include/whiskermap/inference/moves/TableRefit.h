@@ -12,7 +12,9 @@ namespace whiskermap::inference::moves
  *  its invented legs onto its corners. Judged on the exact change of logJoint
  *  (logJointAround). Deterministic (logForward = 0) with no reverse (logReverse = -inf)
  *  unless nothing moved (0). The resize (model key `size_moves`) is the same move with the
- *  table's size fitted too, after its pose, in each round (fitTableSize: eqs. 6 and 24). */
+ *  table's size fitted too, after its pose, in each round (fitTableSize: eqs. 6 and 24).
+ *  With broad proposals: one random-walk step of the table's pose (MoveContext::randomWalk),
+ *  its legs that explain shapelets left where they are, logReverse = 0 (symmetric). */
 class TableRefit
 {
    public:
