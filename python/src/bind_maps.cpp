@@ -174,10 +174,12 @@ void bindMaps(py::module_& m)
 			});
 			return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
 		}, py::arg("sweep"), py::arg("poses"), "likelihood() at each row (x, y, yaw) of an (n, 3) array: one weight per particle")
-		.def("map_objects", [](const Map& mp) { return toArray(mp.read([](const CHierarchicalObjectMap& x) { return x.mapObjects(); })); },
-			 "The map (map_tables.csv): OBJECT_DTYPE (x, y, yaw, length, width, leg_width, texture, existence, contacts, legs).")
-		.def("candidate_objects", [](const Map& mp) { return toArray(mp.read([](const CHierarchicalObjectMap& x) { return x.candidateObjects(); })); },
-			 "Everything else the map considered (map_candidates.csv), OBJECT_DTYPE.")
+		.def("map_objects", [](const Map& mp, bool spreads) { return toArray(mp.read([&](const CHierarchicalObjectMap& x) { return x.mapObjects(spreads); })); },
+			 py::arg("spreads") = false,
+			 "The map (map_tables.csv): OBJECT_DTYPE (x, y, yaw, length, width, leg_width, texture, existence, contacts, legs, "
+			 "sd_x, sd_y, sd_yaw). spreads (lasting mode): each object's pose spread (a short chain each); else NaN.")
+		.def("candidate_objects", [](const Map& mp, bool spreads) { return toArray(mp.read([&](const CHierarchicalObjectMap& x) { return x.candidateObjects(spreads); })); },
+			 py::arg("spreads") = false, "Everything else the map considered (map_candidates.csv), OBJECT_DTYPE.")
 		.def("map_tables", [](const Map& mp) { return toArray(mp.read([](const CHierarchicalObjectMap& x) { return x.mapTables(); })); },
 			 "The tables of map_objects(), TABLE_DTYPE.")
 		.def("pose_records", [](const Map& mp) { return mp.read([](const CHierarchicalObjectMap& x) { return x.poseRecords(); }); },
@@ -198,10 +200,11 @@ void bindMaps(py::module_& m)
 		.def("__copy__", [](const Map& mp) { return std::make_unique<Map>(mp); })
 		.def("__deepcopy__", [](const Map& mp, const py::dict&) { return std::make_unique<Map>(mp); }, py::arg("memo"));
 
-	m.def("write_objects_csv", [](const Path& path, const py::handle& objects) {
-		maps::MapCsv::writeObjects(path.string(), fromArray<maps::TMappedObject>(objects, "objects"));
-	}, py::arg("path"), py::arg("objects"),
-		  "map_tables.csv as whisker-map writes it (maps::MapCsv::writeObjects), from an OBJECT_DTYPE array.");
+	m.def("write_objects_csv", [](const Path& path, const py::handle& objects, bool spreads) {
+		maps::MapCsv::writeObjects(path.string(), fromArray<maps::TMappedObject>(objects, "objects"), false, spreads);
+	}, py::arg("path"), py::arg("objects"), py::arg("spreads") = false,
+		  "map_tables.csv as whisker-map writes it (maps::MapCsv::writeObjects), from an OBJECT_DTYPE array; spreads: "
+		  "with the sd_x, sd_y, sd_yaw_deg columns (the lasting map's; every object must have them).");
 	m.def("write_per_pose_csv", [](const Path& path, const std::vector<maps::TPoseRecord>& records) {
 		maps::MapCsv::writePerPose(path.string(), records);
 	}, py::arg("path"), py::arg("records"),

@@ -10,7 +10,7 @@ import pytest
 import whiskermap as wm
 
 OBJECT_FIELDS = ("x", "y", "yaw", "length", "width", "leg_width", "texture",
-                 "existence", "contacts", "legs")
+                 "existence", "contacts", "legs", "sd_x", "sd_y", "sd_yaw")
 MODES = ("lasting", "per_pose")
 SEED = 7
 
@@ -56,8 +56,9 @@ def test_defaults_come_from_the_shipped_config():
 def test_same_csv_bytes_as_whisker_map(maps, whisker_map, mode, tmp_path):
     m, ref = maps[mode], whisker_map[mode]
     assert m.mode == mode and m.steps == 400
-    wm.write_objects_csv(str(tmp_path / "map_tables.csv"), m.map_objects())
-    wm.write_objects_csv(str(tmp_path / "map_candidates.csv"), m.candidate_objects())
+    spreads = mode == "lasting"  # the lasting map reports each object's pose spread
+    wm.write_objects_csv(str(tmp_path / "map_tables.csv"), m.map_objects(spreads), spreads)
+    wm.write_objects_csv(str(tmp_path / "map_candidates.csv"), m.candidate_objects(spreads), spreads)
     for name in ("map_tables.csv", "map_candidates.csv"):
         assert (tmp_path / name).read_bytes() == (ref / name).read_bytes(), name
     m.save(str(tmp_path / "saved"))
@@ -76,6 +77,12 @@ def test_objects_are_structured_arrays(maps, rawlog, mode):
     assert 4 <= len(objs) <= 8  # the paper arena holds 6 tables
     assert np.all(objs["length"] == 1.0) and np.all(objs["width"] == 0.6)
     assert np.all((objs["legs"] >= 2) & (objs["legs"] <= 4))
+    assert np.all(np.isnan(objs["sd_x"]))  # spreads only when asked for
+    if mode == "lasting":  # sub-millimetre on the default readings, and the same table by table
+        spread = m.map_objects(spreads=True)
+        assert np.all((spread["sd_x"] > 0) & (spread["sd_x"] < 0.005) & (spread["sd_yaw"] > 0) & (spread["sd_yaw"] < 0.01))
+        for f in OBJECT_FIELDS[:10]:
+            assert np.array_equal(spread[f], objs[f])
     tables = m.map_tables()
     for f in wm.TABLE_DTYPE.names:
         assert np.array_equal(tables[f], objs[f])

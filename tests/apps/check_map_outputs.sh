@@ -9,6 +9,7 @@ rm -rf "$work"; mkdir -p "$work"
 data="$src/datasets/paper_arena/default.rawlog"
 world="$src/config/worlds/paper_arena.ini"
 header="id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs"
+spread_header="$header,sd_x,sd_y,sd_yaw_deg"  # the lasting map reports each object's pose spread
 
 # The lasting map (the shipped config's mode).
 "$map" -q -i "$data" -o "$work/a" --world "$world"
@@ -19,7 +20,7 @@ for f in per_pose_tables.csv montage.png; do
   [[ ! -e "$work/a/$f" ]] || { echo "FAIL: lasting: $f written (per-pose mode only)"; exit 1; }
 done
 for f in map_tables.csv map_candidates.csv; do
-  [[ "$(head -1 "$work/a/$f")" == "$header" ]] || { echo "FAIL: $f header"; exit 1; }
+  [[ "$(head -1 "$work/a/$f")" == "$spread_header" ]] || { echo "FAIL: $f header"; exit 1; }
 done
 for key in '"mode": "lasting"' '"poses": 400' '"local_problem":' '"state":' '"map_tables":' '"moves":' '"move_types":' '"table for leg": {' '"acceptance_rate":' '"time_per_pose_ms":' '"median":' '"p95":'; do
   grep -q -- "$key" "$work/a/summary.json" || { echo "FAIL: summary.json lacks $key"; cat "$work/a/summary.json"; exit 1; }
@@ -37,6 +38,7 @@ for f in per_pose_tables.csv map_tables.csv map_candidates.csv montage.png map.p
   [[ -e "$work/p/$f" ]] || { echo "FAIL: per-pose: $f missing"; exit 1; }
 done
 [[ "$(head -1 "$work/p/per_pose_tables.csv")" == "pose,x,y,yaw_deg,length,width,leg_width,texture,log_posterior" ]] || { echo "FAIL: per_pose header"; exit 1; }
+[[ "$(head -1 "$work/p/map_tables.csv")" == "$header" ]] || { echo "FAIL: per-pose map_tables.csv header"; exit 1; }
 grep -q '"mode": "per_pose"' "$work/p/summary.json" || { echo "FAIL: per-pose summary mode"; exit 1; }
 "$map" -q -i "$data" -o "$work/b" --world "$world" --mode per_pose --jobs 2 --simplemap
 for f in per_pose_tables.csv map_tables.csv map_candidates.csv montage.png map.png map.bt metrics.json; do

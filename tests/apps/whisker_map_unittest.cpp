@@ -133,7 +133,7 @@ TEST(WhiskerMap, OfficeWithTheObjectCatalogueAboveItsFloors)
 		EXPECT_GE(jsonNumber(metrics, "f1"), f1) << dataset;
 		EXPECT_GE(jsonNumber(metrics, "class_accuracy"), 0.95) << dataset;
 		EXPECT_LE(jsonNumber(metrics, "length_err_m"), 0.01) << dataset;
-		EXPECT_NE(slurp(out + "/map_tables.csv").find(",legs,class\n"), std::string::npos) << dataset;
+		EXPECT_NE(slurp(out + "/map_tables.csv").find(",legs,sd_x,sd_y,sd_yaw_deg,class\n"), std::string::npos) << dataset;
 		std::vector<whiskermap::world::Wall> walls;
 		for (const auto& row : whiskermap::eval::TableCsv::readWalls(out + "/map_walls.csv")) walls.push_back(row.wall);
 		const auto w = whiskermap::eval::WallEvaluation::compute(

@@ -142,3 +142,33 @@ TEST_F(TableCsvTest, PerPoseRowsStreamInPoseOrderWithBoundedLines)
 	const auto nul = write("nul.csv", MAP_HEAD + std::string("0,1,1,0,1,0.6,0.05,0.7,0.5,3\0\n", 30));
 	EXPECT_EQ(errorOf([&] { TableCsv::readMap(nul); }), nul + ": line 2: holds a control byte 0 (NUL)");
 }
+
+// The lasting map's spread columns (sd_x, sd_y, sd_yaw_deg after legs), with or without the
+// class column last; a file without them has no spreads; a negative or absurd sd is refused.
+TEST_F(TableCsvTest, ReadsTheOptionalSpreadColumns)
+{
+	const std::string row = "0,1.5,2,90,1,0.6,0.05,0.7,0.8,12,3";
+	bool hasClass = true;
+	auto rows = TableCsv::readMap(
+		write("map.csv", std::string(TableCsv::MAP_HEADER_SPREAD) + "\n" + row + ",0.002,0.0015,0.25\n"), &hasClass);
+	ASSERT_EQ(rows.size(), 1u);
+	EXPECT_FALSE(hasClass);
+	ASSERT_TRUE(rows[0].spread.has_value());
+	EXPECT_EQ(rows[0].spread->x, 0.002);
+	EXPECT_EQ(rows[0].spread->y, 0.0015);
+	EXPECT_EQ(rows[0].spread->yaw_deg, 0.25);
+	EXPECT_EQ(rows[0].legs, 3u);
+	rows = TableCsv::readMap(
+		write("map.csv", std::string(TableCsv::MAP_HEADER_SPREAD_CLASS) + "\n" + row + ",0.002,0.0015,0.25,chair\n"),
+		&hasClass);
+	EXPECT_TRUE(hasClass);
+	EXPECT_EQ(rows[0].table.object_class.str(), "chair");
+	EXPECT_EQ(rows[0].spread->yaw_deg, 0.25);
+	EXPECT_FALSE(TableCsv::readMap(write("map.csv", MAP_HEAD + row + "\n"))[0].spread.has_value());
+	EXPECT_EQ(
+		mapError(std::string(TableCsv::MAP_HEADER_SPREAD) + "\n" + row + ",-0.002,0.0015,0.25\n"),
+		map() + ": line 2: column 'sd_x': '-0.002' is out of range [0, 10000]");
+	EXPECT_EQ(
+		mapError(std::string(TableCsv::MAP_HEADER_SPREAD) + "\n" + row + ",0.002,0.0015\n"),
+		map() + ": line 2: expected 14 columns, got 13");
+}

@@ -4,6 +4,7 @@
 // explicit contacts and from folded evidence alike, and weighs each contact by its shaft.
 #include <gtest/gtest.h>
 #include <whiskermap/core/Angles.h>
+#include <whiskermap/inference/RigidPoseSpread.h>
 #include <whiskermap/inference/RigidTableFit.h>
 #include <whiskermap/model/LegEvidence.h>
 
@@ -178,4 +179,76 @@ TEST(RigidTableFit, NoSmallStepImprovesTheFit)
 				EXPECT_LE(rigidScore(st, c, p), best + 1e-9) << "shaft " << shaftNoise << " fold " << fold << " step " << k;
 			}
 		}
+}
+
+// The pose spread (inference::rigidPoseSpread) is calibrated: over 200 sets of readings drawn
+// with the model's own noise (eq. 7 is exp(-(d / sigma_r)^2 - (a / sigma_theta)^2): standard
+// deviations sigma_r / sqrt 2 on the distance, sigma_theta / sqrt 2 on the normal), the truth
+// lies within two reported standard deviations of the fit about 95% of the time, on each
+// axis. A spread half or twice as wide would cover about 68% or 99.99%; drawn with sigma_r
+// and sigma_theta themselves (twice the variance), 85-87%.
+TEST(RigidPoseSpread, TwoStandardDeviationsCoverTheTruthAboutNinetyFivePercentOfTheTime)
+{
+	const model::ModelParams p;
+	std::mt19937 rng(5);
+	std::normal_distribution<double> position(0, p.sigma_r / std::sqrt(2.0)), normal(0, p.sigma_theta / std::sqrt(2.0));
+	constexpr int TRIALS = 200;
+	int covered[3] = {0, 0, 0};
+	double acceptance = 0;
+	for (int k = 0; k < TRIALS; k++)
+	{
+		auto s = contacts(p);
+		for (auto& c : s) c.x += position(rng), c.y += position(rng), c.normal += normal(rng);
+		const auto st = state(p, s, false);
+		const model::Table fit = inference::fitRigidTable(st, 0, p);
+		const inference::PoseSpread spread = inference::rigidPoseSpread(st, 0, fit, p, k);
+		covered[0] += std::abs(fit.x - TRUTH.x) <= 2 * spread.sd_x;
+		covered[1] += std::abs(fit.y - TRUTH.y) <= 2 * spread.sd_y;
+		covered[2] += std::abs(core::angleDiff(fit.theta, TRUTH.theta, M_PI)) <= 2 * spread.sd_yaw;
+		acceptance += spread.acceptance / TRIALS;
+	}
+	std::printf("within 2 sd: x %d, y %d, yaw %d of %d; acceptance %.2f\n", covered[0], covered[1], covered[2], TRIALS, acceptance);
+	for (const int c : covered)
+	{
+		EXPECT_GE(c, 0.88 * TRIALS);
+		EXPECT_LE(c, 0.99 * TRIALS);
+	}
+	EXPECT_GT(acceptance, 0.15);  // the Laplace-scaled proposal mixes (about 0.3 expected in 3-D)
+	EXPECT_LT(acceptance, 0.6);
+}
+
+// More contacts, narrower spread: each contact read four times halves the standard
+// deviations (the score's curvature grows fourfold). Same seed, same answer.
+TEST(RigidPoseSpread, ShrinksWithTheContactsAndIsReproducible)
+{
+	const model::ModelParams p;
+	auto once = contacts(p);
+	auto four = std::vector<obs::Shapelet>();
+	for (const auto& c : once)
+		for (int r = 0; r < 4; r++) four.push_back(c);
+	const auto a = state(p, once, false);
+	// state() puts contact i on leg i / 3: four copies of 9 contacts need legs of 12.
+	std::vector<obs::Shapelet> regrouped;
+	for (int leg = 0; leg < 3; leg++)
+		for (int r = 0; r < 4; r++)
+			for (int i = 0; i < 3; i++) regrouped.push_back(once[static_cast<size_t>(3 * leg + i)]);
+	model::LastingState b(p);
+	{
+		std::vector<model::Leg> legs;
+		std::vector<model::LegEvidence> evidence(3);
+		std::vector<model::LastingState::Contact> kept;
+		for (model::Id l = 0; l < 3; l++) legs.push_back(a.leg(l));
+		for (size_t i = 0; i < regrouped.size(); i++) kept.push_back({regrouped[i], static_cast<model::Id>(i / 12), i});
+		b.restore({a.table(0)}, {1.0}, {}, legs, evidence, kept, regrouped.size(), p);
+	}
+	const model::Table fa = inference::fitRigidTable(a, 0, p), fb = inference::fitRigidTable(b, 0, p);
+	const inference::PoseSpread sa = inference::rigidPoseSpread(a, 0, fa, p, 3);
+	const inference::PoseSpread sb = inference::rigidPoseSpread(b, 0, fb, p, 3);
+	EXPECT_NEAR(sb.sd_x / sa.sd_x, 0.5, 0.1);
+	EXPECT_NEAR(sb.sd_y / sa.sd_y, 0.5, 0.1);
+	EXPECT_NEAR(sb.sd_yaw / sa.sd_yaw, 0.5, 0.1);
+	const inference::PoseSpread again = inference::rigidPoseSpread(a, 0, fa, p, 3);
+	EXPECT_EQ(again.sd_x, sa.sd_x);
+	EXPECT_EQ(again.sd_yaw, sa.sd_yaw);
+	EXPECT_NE(inference::rigidPoseSpread(a, 0, fa, p, 4).sd_x, sa.sd_x);
 }

@@ -112,18 +112,19 @@ TEST(SweptGridMap, VersionFourStreamsLoadWithoutTheGrid)
 	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
 	ASSERT_EQ(bytes[0], static_cast<uint8_t>(name.size() | 0x80));
 	ASSERT_EQ(std::string(bytes.begin() + 1, bytes.begin() + 1 + static_cast<long>(name.size())), name);
-	ASSERT_EQ(bytes[1 + name.size()], 8);
+	ASSERT_EQ(bytes[1 + name.size()], 9);
 	bytes[1 + name.size()] = 4;
 	// version 5's tail: swept_cell, free_space, cell_prior, cell_prior_sweeps, p_unexplored,
 	// the grid's cell edge and count, 12 bytes a cell; version 6's sigma_corner,
 	// noisy_revisions and revision round robin's insertion number; version 7's move types
 	// (a count, then per type a length byte, the name and two 8-byte counts); version 8's
-	// size_moves and four size offsets per lasting table; then MRPT's end flag
+	// size_moves and four size offsets per lasting table; version 9's sensor noise (three
+	// doubles); then MRPT's end flag
 	size_t moveTypes = 4;
 	for (const auto& t : a.moveTypes()) moveTypes += 1 + t.name.size() + 8 + 8;
 	ASSERT_GT(a.moveTypes().size(), 5u);
 	const size_t sizes = 1 + 32 * a.lastingMap().state().tableCount();
-	const size_t tail = 8 + 1 + 8 + 8 + 8 + 8 + 4 + 12 * a.sweptGrid().cells().size() + 8 + 4 + 8 + moveTypes + sizes;
+	const size_t tail = 8 + 1 + 8 + 8 + 8 + 8 + 4 + 12 * a.sweptGrid().cells().size() + 8 + 4 + 8 + moveTypes + sizes + 24;
 	bytes.erase(bytes.end() - 1 - static_cast<long>(tail), bytes.end() - 1);
 	const auto old = read(bytes);
 	ASSERT_TRUE(old);
@@ -191,7 +192,7 @@ TEST(SweptGridMap, MoveTypeCountsAddUpAndAreReadStrictly)
 	size_t section = 4;
 	for (const auto& t : a.moveTypes()) section += 1 + t.name.size() + 8 + 8;
 	const std::vector<uint8_t> good = bytesOf(a);
-	const size_t sizes = 1 + 32 * a.lastingMap().state().tableCount();  // version 8's section, after it
+	const size_t sizes = 1 + 32 * a.lastingMap().state().tableCount() + 24;  // versions 8 and 9, after it
 	const size_t at = good.size() - 1 - sizes - section;  // the section's type count
 	std::vector<uint8_t> bad = good;
 	bad[at] = 65, bad[at + 1] = bad[at + 2] = bad[at + 3] = 0;  // little-endian 65
@@ -237,6 +238,41 @@ TEST(SweptGridMap, TableSizesRoundTripAndAreReadStrictly)
 	for (size_t i = 0; i < a.mapTables().size(); i++) EXPECT_EQ(back->mapTables()[i].length, a.mapTables()[i].length);
 	std::vector<uint8_t> bad = good;
 	const double nan = std::nan("");
-	std::memcpy(&bad[bad.size() - 1 - 8], &nan, 8);  // the last table's reported width offset
+	std::memcpy(&bad[bad.size() - 1 - 24 - 8], &nan, 8);  // the last table's reported width offset (version 9 after it)
 	EXPECT_THROW(read(bad), std::exception);
+}
+
+// Version 9: the last insertion's sensor noise survives a round trip, so a reloaded map
+// reports the same pose spreads; a negative or non-finite noise is refused.
+TEST(SweptGridMap, SensorNoiseRoundTripsAndThePoseSpreadsWithIt)
+{
+	// The very noisy log states a sigma_r above the model's: the spreads' model is raised to it.
+	static const auto noisy = obs::RawlogReader::read(SRC + "/datasets/paper_arena/very-noisy.rawlog");
+	CHierarchicalObjectMap a, base;
+	for (size_t i = 0; i < 200; i++)
+		a.insertObservation(*noisy.sweeps[i].obs, mrpt::poses::CPose3D(noisy.sweeps[i].robotPose));
+	ASSERT_GT(noisy.sweeps[0].obs->noise.sigma_r, a.modelParams.sigma_r);
+	const auto spreads = a.mapObjects(true);
+	ASSERT_FALSE(spreads.empty());
+	const std::vector<uint8_t> good = bytesOf(a);
+	const auto back = read(good);
+	ASSERT_TRUE(back);
+	const auto again = back->mapObjects(true);
+	ASSERT_EQ(again.size(), spreads.size());
+	// Equal up to the order of summation (a reloaded state lists a leg's contacts anew).
+	for (size_t i = 0; i < spreads.size(); i++)
+	{
+		EXPECT_GT(spreads[i].sd_x, 0);
+		EXPECT_NEAR(again[i].sd_x, spreads[i].sd_x, 1e-6 * spreads[i].sd_x);
+		EXPECT_NEAR(again[i].sd_yaw, spreads[i].sd_yaw, 1e-6 * spreads[i].sd_yaw);
+	}
+	back->insertionOptions.use_sensor_noise = false;  // the map's own sigma_r: narrower spreads
+	const auto narrow = back->mapObjects(true);
+	for (size_t i = 0; i < spreads.size(); i++) EXPECT_LT(narrow[i].sd_x, spreads[i].sd_x) << i;
+	for (const double v : {-0.01, std::nan(""), 1e9})
+	{
+		std::vector<uint8_t> bad = good;
+		std::memcpy(&bad[bad.size() - 1 - 24], &v, 8);  // sigma_r
+		EXPECT_THROW(read(bad), std::exception) << v;
+	}
 }

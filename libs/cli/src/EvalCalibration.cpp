@@ -13,11 +13,12 @@ namespace whiskermap::cli
 {
 eval::Calibration EvalCalibration::ofMap(
 	const std::string& world, const std::string& map, const std::string& candidates,
-	const eval::EvalOptions& opts)
+	const eval::EvalOptions& opts, eval::SpreadCoverage* spread)
 {
 	const auto w = world::World::load(world);
 	bool hasClass = false;
 	auto rows = eval::TableCsv::readMap(map, &hasClass);
+	if (spread) spread->add(eval::SpreadCoverage::of(w.tables, rows, opts, hasClass));
 	if (!candidates.empty())
 	{
 		bool candClass = false;
@@ -29,7 +30,7 @@ eval::Calibration EvalCalibration::ofMap(
 	return eval::Calibration::of(w.tables, rows, opts, hasClass);
 }
 
-eval::Calibration EvalCalibration::ofRuns(const std::string& list, const eval::EvalOptions& opts)
+eval::Calibration EvalCalibration::ofRuns(const std::string& list, const eval::EvalOptions& opts, eval::SpreadCoverage* spread)
 {
 	std::ifstream f(list);
 	if (!f) throw core::Error(list + ": no such file");
@@ -48,7 +49,7 @@ eval::Calibration EvalCalibration::ofRuns(const std::string& list, const eval::E
 		const auto at = [&](const std::string& file) {
 			return file.empty() || std::filesystem::path(file).is_absolute() ? file : (std::filesystem::path(list).parent_path() / file).string();
 		};
-		pooled.add(ofMap(at(world), at(map), at(candidates), opts));
+		pooled.add(ofMap(at(world), at(map), at(candidates), opts, spread));
 		runs++;
 	}
 	if (runs == 0) throw core::Error(list + ": no run listed");

@@ -192,13 +192,14 @@ void MapOutputs::writeScene(const std::string& path) const
 
 std::string MapOutputs::finish(double wallSeconds)
 {
-	const auto objects = m_map.mapObjects();  // the map, computed once
+	const bool spreads = m_map.lasting();  // the lasting map reports each object's pose spread
+	const auto objects = m_map.mapObjects(spreads);  // the map, computed once
 	std::vector<world::Table> mapped;
 	for (const auto& o : objects) mapped.push_back(o.table);
-	const auto candidates = m_map.candidateObjects();
+	const auto candidates = m_map.candidateObjects(spreads);
 	const bool withClass = !m_map.modelParams.classes.empty();
-	maps::MapCsv::writeObjects(m_out.path("map_tables.csv"), objects, withClass);
-	maps::MapCsv::writeObjects(m_out.path("map_candidates.csv"), candidates, withClass);
+	maps::MapCsv::writeObjects(m_out.path("map_tables.csv"), objects, withClass, spreads);
+	maps::MapCsv::writeObjects(m_out.path("map_candidates.csv"), candidates, withClass, spreads);
 	std::vector<world::Obstacle> walls;  // the map's walls, when the model has them
 	for (const auto& w : m_map.mapWalls()) walls.push_back(wallSolid(w.wall));
 	if (m_map.modelParams.walls) maps::MapCsv::writeWalls(m_out.path("map_walls.csv"), m_map.mapWalls());

@@ -50,7 +50,11 @@ int run(const Options& o)
 	{
 		if (!o.map.empty() || !o.path.empty() || !o.world.empty() || !o.candidates.empty())
 			throw core::Error("--calibration-runs pools the maps it lists: give no --map, --candidates, --world or --path");
-		return printWith(o, [&](eval::EvalReport& r) { r.calibration = EvalCalibration::ofRuns(o.calibrationRuns, o.eval); });
+		return printWith(o, [&](eval::EvalReport& r) {
+			eval::SpreadCoverage spread;
+			r.calibration = EvalCalibration::ofRuns(o.calibrationRuns, o.eval, &spread);
+			if (spread.count() > 0) r.spread = spread;
+		});
 	}
 	if (!o.candidates.empty() && !o.calibration) throw core::Error("--candidates is pooled with --map for --calibration: give --calibration");
 	if (!o.plot.empty() && !o.calibration) throw core::Error("--reliability-plot draws --calibration or --calibration-runs: give one");
@@ -73,8 +77,10 @@ int run(const Options& o)
 	}
 	const auto w = world::World::load(o.world);
 	bool hasClass = false;
-	const auto estimated = eval::TableCsv::tables(eval::TableCsv::readMap(o.map, &hasClass));
+	const auto rows = eval::TableCsv::readMap(o.map, &hasClass);
+	const auto estimated = eval::TableCsv::tables(rows);
 	report.map = eval::MapEvaluation::compute(w.tables, estimated, o.eval, hasClass);
+	if (!rows.empty() && rows.front().spread) report.spread = eval::SpreadCoverage::of(w.tables, rows, o.eval, hasClass);
 	std::vector<world::Wall> estimatedWalls;
 	if (!o.walls.empty())
 		for (const auto& r : eval::TableCsv::readWalls(o.walls)) estimatedWalls.push_back(r.wall);

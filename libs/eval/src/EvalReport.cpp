@@ -157,6 +157,7 @@ std::string EvalReport::toJson() const
 	if (walls) top.emplace_back("walls", object(wallFields(*walls), 2));
 	if (trajectory) top.emplace_back("trajectory", object(trajectoryFields(*trajectory, options), 2));
 	if (calibration) top.emplace_back("calibration", calibration->toJson(2));
+	if (spread) top.emplace_back("pose_spread", spread->toJson(2));
 	return object(top, 0) + "\n";
 }
 
@@ -180,6 +181,7 @@ std::string EvalReport::toText() const
 	}
 	if (trajectory) s += trajectoryText(*trajectory, options);
 	if (calibration) s += calibration->toText();
+	if (spread) s += spread->toText();
 	return s;
 }
 

@@ -56,9 +56,7 @@ Candidates candidates(
 		const auto e = orientedLike(estimated[p.col], t);
 		if (p.cost > MapEvaluation::gateFor(t, opts)) continue;
 		if (sameClass && e.object_class != t.object_class) continue;
-		// a square's symmetry: the truth's, or the estimate's (its yaw is then known modulo 90)
-		const double period = t.length == t.width || e.length == e.width ? M_PI / 2 : M_PI;
-		const double yaw = core::rad2deg(std::abs(core::angleDiff(e.yaw, t.yaw, period)));
+		const double yaw = core::rad2deg(std::abs(MapEvaluation::yawError(t, estimated[p.col])));
 		if (yaw > opts.gate_yaw_deg) continue;
 		c.pairs.push_back(p);
 		c.yawErr.push_back(yaw);
@@ -91,6 +89,14 @@ ClassFigures classFigures(
 	return f;
 }
 }  // namespace
+
+double MapEvaluation::yawError(const world::Table& truth, const world::Table& estimated)
+{
+	const auto e = orientedLike(estimated, truth);
+	// a square's symmetry: the truth's, or the estimate's (its yaw is then known modulo 90)
+	const double period = truth.length == truth.width || e.length == e.width ? M_PI / 2 : M_PI;
+	return core::angleDiff(e.yaw, truth.yaw, period);
+}
 
 double MapEvaluation::gateFor(const world::Table& truth, const EvalOptions& opts)
 {

@@ -3,6 +3,7 @@
 #include <whiskermap/core/LineReader.h>
 #include <whiskermap/eval/TableCsv.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -93,13 +94,13 @@ class Row
 class CsvReader
 {
    public:
-	/** `alternative`, when given, is a second header the file may have instead. */
-	CsvReader(const std::string& path, std::string header, const std::string& alternative = "")
-		: m_in(path, "file"), m_path(path), m_header(std::move(header))
+	/** The file's header must be one of `headers` (the first is the one an error names). */
+	CsvReader(const std::string& path, const std::vector<std::string>& headers)
+		: m_in(path, "file"), m_path(path), m_header(headers.front())
 	{
 		std::string line;
 		if (!m_in.next(line)) throw core::Error(path + ": empty file (expected the header '" + m_header + "')");
-		if (line != m_header && (alternative.empty() || line != alternative))
+		if (std::find(headers.begin(), headers.end(), line) == headers.end())
 			throw core::Error(m_in.where() + "bad header '" + line + "' (expected '" + m_header + "')");
 		m_names = split(line);
 	}
@@ -122,12 +123,11 @@ class CsvReader
 	std::vector<std::string> m_names;
 };
 
-/** Calls onRow on every row; returns the column names of the header found. */
+/** Calls onRow on every row; returns the column names of the header found (one of `headers`). */
 std::vector<std::string> readCsv(
-	const std::string& path, const std::string& header, const std::function<void(const Row&)>& onRow,
-	const std::string& alternative = "")
+	const std::string& path, const std::vector<std::string>& headers, const std::function<void(const Row&)>& onRow)
 {
-	CsvReader in(path, header, alternative);
+	CsvReader in(path, headers);
 	while (const auto row = in.next()) onRow(*row);
 	return in.names();
 }
@@ -139,30 +139,33 @@ std::vector<TableCsv::MapRow> TableCsv::readMap(const std::string& path, bool* h
 {
 	std::vector<MapRow> rows;
 	std::set<long> ids;
-	const auto names = readCsv(path, MAP_HEADER, [&](const Row& r) {
+	const auto names = readCsv(path, {MAP_HEADER, MAP_HEADER_CLASS, MAP_HEADER_SPREAD, MAP_HEADER_SPREAD_CLASS}, [&](const Row& r) {
+		const bool withSpread = r.size() >= 14, withClass = r.size() == 12 || r.size() == 15;
 		MapRow m;
 		m.id = r.integer(0, 1e9);
 		m.table = r.table();
-		if (r.size() > 11)
+		if (withClass)
 		{
-			if (!world::ObjectClass::valid(r.text(11)))
-				r.fail("column 'class': '" + r.text(11) + "' is not a class name (1 to 31 letters, digits or _)");
-			m.table.object_class = world::ObjectClass(r.text(11));
+			const std::string& name = r.text(r.size() - 1);
+			if (!world::ObjectClass::valid(name))
+				r.fail("column 'class': '" + name + "' is not a class name (1 to 31 letters, digits or _)");
+			m.table.object_class = world::ObjectClass(name);
 		}
 		m.existence = r.number(8, 0, 1);
 		m.contacts = static_cast<uint64_t>(r.integer(9, 1e15));
 		m.legs = static_cast<uint32_t>(r.integer(10, 4));
+		if (withSpread) m.spread = MapRow::Spread{r.number(11, 0, 1e4), r.number(12, 0, 1e4), r.number(13, 0, 180)};
 		if (!ids.insert(m.id).second) r.fail("duplicate id " + std::to_string(m.id));
 		rows.push_back(m);
-	}, MAP_HEADER_CLASS);
-	if (hasClass) *hasClass = names.size() > 11;
+	});
+	if (hasClass) *hasClass = names.back() == "class";
 	return rows;
 }
 
 std::vector<TableCsv::WallRow> TableCsv::readWalls(const std::string& path)
 {
 	std::vector<WallRow> rows;
-	readCsv(path, WALLS_HEADER, [&](const Row& r) {
+	readCsv(path, {WALLS_HEADER}, [&](const Row& r) {
 		const double big = 1e4;
 		WallRow w;
 		w.wall.x0 = r.number(0, -big, big);
@@ -179,7 +182,7 @@ std::vector<TableCsv::WallRow> TableCsv::readWalls(const std::string& path)
 
 struct TableCsv::PerPoseReader::Impl
 {
-	Impl(const std::string& path, size_t n) : in(path, PER_POSE_HEADER), poses(n) {}
+	Impl(const std::string& path, size_t n) : in(path, {PER_POSE_HEADER}), poses(n) {}
 	CsvReader in;
 	size_t poses, next = 0;  ///< the pose next() gives next
 	std::optional<std::pair<size_t, world::Table>> pending;  ///< a row read ahead

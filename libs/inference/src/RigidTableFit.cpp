@@ -7,22 +7,24 @@
 
 namespace whiskermap::inference
 {
+double rigidTableScore(const model::LastingState& s, model::Id t, const model::Table& table, const model::ModelParams& p)
+{
+	double v = 0;
+	for (const model::Id l : s.legsOf(t))
+	{
+		model::Leg leg = s.leg(l);
+		if (leg.corner < 0) continue;
+		model::tableCorner(table, leg.corner, p, leg.x, leg.y);  // eq. 6, rigid
+		leg.theta = table.theta;
+		if (!s.evidence(l).empty()) v += s.evidence(l).logLikelihood(leg, p);  // eq. 7, folded
+		for (const model::Id c : s.contactsOf(l)) v += model::logShapeletGivenLeg(s.contact(c).shapelet, leg, p);  // eq. 7
+	}
+	return v;
+}
+
 model::Table fitRigidTable(const model::LastingState& s, model::Id t, const model::ModelParams& p)
 {
-	// sum over its legs of eq. 7, each leg at its corner of `table`, turned with it
-	auto score = [&](const model::Table& table) {
-		double v = 0;
-		for (const model::Id l : s.legsOf(t))
-		{
-			model::Leg leg = s.leg(l);
-			if (leg.corner < 0) continue;
-			model::tableCorner(table, leg.corner, p, leg.x, leg.y);  // eq. 6, rigid
-			leg.theta = table.theta;
-			if (!s.evidence(l).empty()) v += s.evidence(l).logLikelihood(leg, p);
-			for (const model::Id c : s.contactsOf(l)) v += model::logShapeletGivenLeg(s.contact(c).shapelet, leg, p);
-		}
-		return v;
-	};
+	const auto score = [&](const model::Table& table) { return rigidTableScore(s, t, table, p); };
 	model::Table best = s.table(t);
 	if (s.legsOf(t).empty()) return best;
 	// Turns pivot about the legs' mean corner, so that a turn barely moves the touched legs

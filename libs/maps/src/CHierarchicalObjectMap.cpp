@@ -84,30 +84,34 @@ TMappedObject CHierarchicalObjectMap::mapped(model::Id t) const
 	return m;
 }
 
-std::vector<TMappedObject> CHierarchicalObjectMap::mapObjects() const
+std::vector<TMappedObject> CHierarchicalObjectMap::lastingObjects(bool inMap, bool spreads) const
 {
 	std::vector<TMappedObject> out;
-	if (lasting())
+	const auto& s = m_lasting.state();
+	const model::ModelParams noiseModel = modelFor(m_lastNoise);  // as the last insertion scored its contacts
+	for (model::Id t = 0; t < s.tableIdBound(); t++)
 	{
-		const auto& s = m_lasting.state();
-		for (model::Id t = 0; t < s.tableIdBound(); t++)
-			if (s.hasTable(t) && s.existence(t) >= likelihoodOptions.min_existence) out.push_back(mapped(t));
-		return out;
+		if (!s.hasTable(t) || (s.existence(t) >= likelihoodOptions.min_existence) != inMap) continue;
+		out.push_back(mapped(t));
+		if (!spreads) continue;
+		const inference::PoseSpread spread = m_lasting.poseSpread(t, noiseModel, out.size() - 1);
+		out.back().sd_x = spread.sd_x, out.back().sd_y = spread.sd_y, out.back().sd_yaw = spread.sd_yaw;
 	}
+	return out;
+}
+
+std::vector<TMappedObject> CHierarchicalObjectMap::mapObjects(bool spreads) const
+{
+	if (lasting()) return lastingObjects(true, spreads);
+	std::vector<TMappedObject> out;
 	for (const size_t i : supported()) out.push_back(mapped(objects()[i]));
 	return out;
 }
 
-std::vector<TMappedObject> CHierarchicalObjectMap::candidateObjects() const
+std::vector<TMappedObject> CHierarchicalObjectMap::candidateObjects(bool spreads) const
 {
+	if (lasting()) return lastingObjects(false, spreads);
 	std::vector<TMappedObject> out;
-	if (lasting())
-	{
-		const auto& s = m_lasting.state();
-		for (model::Id t = 0; t < s.tableIdBound(); t++)
-			if (s.hasTable(t) && s.existence(t) < likelihoodOptions.min_existence) out.push_back(mapped(t));
-		return out;
-	}
 	auto kept = supported();
 	std::sort(kept.begin(), kept.end());
 	for (size_t i = 0; i < objects().size(); i++)
@@ -181,6 +185,7 @@ void CHierarchicalObjectMap::internal_clear()
 	m_lastRecord = {};
 	m_lastInput = {};
 	m_steps = 0;
+	m_lastNoise = {};
 	m_legCache.invalidate();
 }
 
@@ -220,6 +225,7 @@ void CHierarchicalObjectMap::insertLasting(const obs::CObservationWhiskerContact
 	recordSwept(pose, in.shapelets, sweep.toSweptSectors(pose));
 	in.seed = splitmix64(insertionOptions.seed ^ splitmix64(m_steps));
 	in.model = modelFor(sweep.noise);
+	m_lastNoise = sweep.noise;
 	m_steps++;
 	m_lasting.setOptions(insertionOptions.lasting);
 	m_lastLasting = m_lasting.insert(in.shapelets, in.model, samplerParams, in.seed);
@@ -320,8 +326,8 @@ double CHierarchicalObjectMap::internal_computeObservationLikelihood(
 void CHierarchicalObjectMap::saveMetricMapRepresentationToFile(const std::string& prefix) const
 {
 	const bool withClass = !modelParams.classes.empty();
-	MapCsv::writeObjects(prefix + "_map_tables.csv", mapObjects(), withClass);
-	MapCsv::writeObjects(prefix + "_map_candidates.csv", candidateObjects(), withClass);
+	MapCsv::writeObjects(prefix + "_map_tables.csv", mapObjects(lasting()), withClass, lasting());
+	MapCsv::writeObjects(prefix + "_map_candidates.csv", candidateObjects(lasting()), withClass, lasting());
 	if (!lasting()) MapCsv::writePerPose(prefix + "_per_pose_tables.csv", m_poses);
 }
 

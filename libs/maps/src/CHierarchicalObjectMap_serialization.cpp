@@ -4,7 +4,8 @@
 // versions before 4 without walls (walls = false); versions before 5 with an empty swept grid
 // (the likelihood then knows no free space); versions before 6 with sigma_corner = sigma_r and
 // no revisions; versions before 7 without the counts per move type; versions before 8 without
-// size moves (every lasting table at its class's size).
+// size moves (every lasting table at its class's size); versions before 9 without the last
+// insertion's sensor noise.
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/model/ObjectCatalogue.h>
@@ -272,7 +273,7 @@ void readSizes(CArchive& in, model::ModelParams& m, LastingParts& parts)
 }
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 8; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 9; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -330,6 +331,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	writeMoveTypes(out, m_moveTypes);
 	// Version 8: size moves and the lasting tables' sizes.
 	writeSizes(out, m, m_lasting.state());
+	// Version 9: the sensor noise of the last lasting insertion (the pose spreads' model).
+	out << m_lastNoise.sigma_r << m_lastNoise.sigma_phi << m_lastNoise.sigma_tau;
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -345,6 +348,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 6:
 		case 7:
 		case 8:
+		case 9:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -421,6 +425,13 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 			if (version >= 7) readMoveTypes(in, m_moveTypes);  // older streams: none (internal_clear above)
 			m.size_moves = false;  // versions before 8: every table at its class's size
 			if (version >= 8) readSizes(in, m, lasting);
+			if (version >= 9)  // older streams: none stated (the pose spreads use the map's model)
+			{
+				in >> m_lastNoise.sigma_r >> m_lastNoise.sigma_phi >> m_lastNoise.sigma_tau;
+				for (const double v : {m_lastNoise.sigma_r, m_lastNoise.sigma_phi, m_lastNoise.sigma_tau})
+					if (!(v >= 0 && v <= 1e3))
+						THROW_EXCEPTION("CHierarchicalObjectMap: corrupt sensor noise (not a number in [0, 1000])");
+			}
 			if (version >= 1)
 			{
 				m_lasting.state().restore(

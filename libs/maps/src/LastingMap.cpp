@@ -107,6 +107,13 @@ void LastingMap::refitReported(const model::ModelParams& model)
 			m_state.setReported(t, inference::fitRigidTable(m_state, t, shaft));
 }
 
+inference::PoseSpread LastingMap::poseSpread(model::Id t, const model::ModelParams& model, uint64_t seed) const
+{
+	model::ModelParams shaft = model;
+	shaft.shaft_noise = true;  // as refitReported fits the reported pose
+	return inference::rigidPoseSpread(m_state, t, inference::fitRigidTable(m_state, t, shaft), shaft, seed);
+}
+
 LastingMap::TStats LastingMap::insert(
 	const std::vector<obs::Shapelet>& contacts, const model::ModelParams& model,
 	const inference::SamplerParams& sampler, uint64_t seed)

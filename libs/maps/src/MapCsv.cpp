@@ -3,6 +3,7 @@
 #include <whiskermap/maps/MapCsv.h>
 #include <whiskermap/maps/PerPoseCsvWriter.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -41,11 +42,12 @@ void MapCsv::writeWalls(const std::string& path, const std::vector<model::Lastin
 	});
 }
 
-void MapCsv::writeObjects(const std::string& path, const std::vector<TMappedObject>& objects, bool withClass)
+void MapCsv::writeObjects(
+	const std::string& path, const std::vector<TMappedObject>& objects, bool withClass, bool withSpread)
 {
-	const char* header = withClass ? "id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs,class"
-								   : "id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs";
-	writeFile(path, header, [&](FILE* f) {
+	const std::string header = std::string("id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs") +
+							   (withSpread ? ",sd_x,sd_y,sd_yaw_deg" : "") + (withClass ? ",class" : "");
+	writeFile(path, header.c_str(), [&](FILE* f) {
 		for (size_t i = 0; i < objects.size(); i++)
 		{
 			std::fprintf(f, "%zu,", i);
@@ -53,6 +55,10 @@ void MapCsv::writeObjects(const std::string& path, const std::vector<TMappedObje
 			std::fprintf(
 				f, ",%.4f,%llu,%u", objects[i].existence, static_cast<unsigned long long>(objects[i].contacts),
 				objects[i].legs);
+			const TMappedObject& o = objects[i];
+			if (withSpread && !(std::isfinite(o.sd_x) && std::isfinite(o.sd_y) && std::isfinite(o.sd_yaw)))
+				throw core::Error(path + ": object " + std::to_string(i) + " has no pose spread (sd_x, sd_y, sd_yaw)");
+			if (withSpread) std::fprintf(f, ",%.6f,%.6f,%.4f", o.sd_x, o.sd_y, o.sd_yaw * 180 / M_PI);
 			std::fprintf(f, withClass ? ",%s\n" : "\n", objects[i].table.object_class.str().c_str());
 		}
 	});

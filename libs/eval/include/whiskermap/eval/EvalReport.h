@@ -4,6 +4,7 @@
 #include <whiskermap/eval/Identifiability.h>
 #include <whiskermap/eval/MapEvaluation.h>
 #include <whiskermap/eval/PerPoseEvaluation.h>
+#include <whiskermap/eval/SpreadCoverage.h>
 #include <whiskermap/eval/TrajectoryEvaluation.h>
 #include <whiskermap/eval/WallEvaluation.h>
 
@@ -23,6 +24,7 @@ struct EvalReport
 	std::optional<TrajectoryEvaluation> trajectory;  ///< when an estimated path was given
 	std::optional<WallEvaluation> walls;  ///< when estimated walls were given
 	std::optional<Calibration> calibration;  ///< existence calibration (--calibration)
+	std::optional<SpreadCoverage> spread;  ///< pose spread coverage, when the map reports spreads
 
 	/** `{ "precision": ..., ..., "per_pose": { ... }, "trajectory": { ... } }`, ending in a
 	 *  newline; the map's figures only with a map. Numbers have six decimals (counts none); an

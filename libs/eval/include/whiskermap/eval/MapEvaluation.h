@@ -31,5 +31,9 @@ struct MapEvaluation
 	/** The centre gate of a true object: gate_distance times its leg-centre diagonal over
 	 *  the paper table's (hypot(1.0, 0.6) m). */
 	static double gateFor(const world::Table& truth, const EvalOptions& opts);
+	/** The estimate's signed yaw error against the truth, radians: the estimate described
+	 *  like the truth (sides swapped and turned by 90 degrees when that is closer) and
+	 *  compared modulo its symmetry (90 degrees when either is square, else 180). */
+	static double yawError(const world::Table& truth, const world::Table& estimated);
 };
 }  // namespace whiskermap::eval

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,11 @@ class TableCsv
 	/** The same with the objects' classes (issue 11): a map without it holds tables. */
 	static constexpr const char* MAP_HEADER_CLASS =
 		"id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs,class";
+	/** The lasting map's: with its objects' pose spreads, and their classes if any. */
+	static constexpr const char* MAP_HEADER_SPREAD =
+		"id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs,sd_x,sd_y,sd_yaw_deg";
+	static constexpr const char* MAP_HEADER_SPREAD_CLASS =
+		"id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs,sd_x,sd_y,sd_yaw_deg,class";
 	/** `map_walls.csv`: one estimated wall per row (centre line end points, metres). */
 	static constexpr const char* WALLS_HEADER = "x0,y0,x1,y1,thickness,existence";
 	static constexpr const char* PER_POSE_HEADER =
@@ -35,9 +41,16 @@ class TableCsv
 		double existence = 0;  ///< in [0, 1]
 		uint64_t contacts = 0;  ///< contacts its legs explain
 		uint32_t legs = 0;  ///< legs with a contact, 0..4
+		/** The pose's standard deviations (the lasting map's spread columns). */
+		struct Spread
+		{
+			double x = 0, y = 0, yaw_deg = 0;  ///< metres, metres, degrees
+		};
+		std::optional<Spread> spread;  ///< when the file has the spread columns
 	};
 
-	/** `map_tables.csv` (or `map_candidates.csv`), with or without the class column (a
+	/** `map_tables.csv` (or `map_candidates.csv`), with or without the spread columns
+	 *  (`sd_x,sd_y,sd_yaw_deg`, after `legs`) and with or without the class column last (a
 	 *  class: 1 to 31 letters, digits or _; `hasClass`, if given, tells which). Ids must be
 	 *  distinct. */
 	static std::vector<MapRow> readMap(const std::string& path, bool* hasClass = nullptr);

@@ -16,4 +16,10 @@ namespace whiskermap::inference
  *  not at a corner (corner < 0) are left out. Returns the table with that pose (size,
  *  texture unchanged); a table without legs keeps its pose. */
 model::Table fitRigidTable(const model::LastingState& s, model::Id t, const model::ModelParams& p);
+
+/** The score fitRigidTable maximises: eq. 7 under `p` summed over every contact (explicit and
+ *  folded) of lasting table t's legs at a corner, each leg rigid at its corner of `table`
+ *  (eq. 6 with no slack) and turned with it. */
+double rigidTableScore(
+	const model::LastingState& s, model::Id t, const model::Table& table, const model::ModelParams& p);
 }  // namespace whiskermap::inference

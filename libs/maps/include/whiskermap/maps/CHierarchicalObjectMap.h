@@ -102,11 +102,13 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	/** The map: lasting mode, the tables with existence >= min_existence; per-pose mode, the
 	 *  consolidated objects with support >= min_support, best supported first, leaving out
 	 *  any that overlaps one already taken (eq. 16). What the likelihood, the pictures, the
-	 *  exports and the evaluation use, and what map_tables.csv holds. */
-	std::vector<TMappedObject> mapObjects() const;
+	 *  exports and the evaluation use, and what map_tables.csv holds. With `spreads` (lasting
+	 *  mode only), each with its pose spread (LastingMap::poseSpread, seeded with its row:
+	 *  a short chain each, as map_tables.csv reports it). */
+	std::vector<TMappedObject> mapObjects(bool spreads = false) const;
 	/** Everything else the map considered: tables below min_existence, objects below
-	 *  min_support or overlapping a better one (map_candidates.csv). */
-	std::vector<TMappedObject> candidateObjects() const;
+	 *  min_support or overlapping a better one (map_candidates.csv); `spreads` as above. */
+	std::vector<TMappedObject> candidateObjects(bool spreads = false) const;
 	/** Lasting mode with the model's walls: the walls with existence >= min_existence
 	 *  (map_walls.csv); empty otherwise. */
 	std::vector<model::LastingState::StoredWall> mapWalls() const;
@@ -192,6 +194,9 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	TPoseRecord m_lastRecord;
 	TStepInput m_lastInput;
 	uint64_t m_steps = 0;
+	/** The sensor noise the last lasting insertion stated (zeros: none yet): the pose spreads
+	 *  score the contacts with its model (modelFor), as the reported poses were fitted. */
+	obs::TSensorNoise m_lastNoise;
 	int m_snapshotTemperature = -1;
 	StepSolver m_solver;
 	/** mappedSolids() cache; a copy starts empty (invalid). */
@@ -227,6 +232,9 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	/** A consolidated object (per-pose mode) or a lasting table, as written out. */
 	TMappedObject mapped(const TMapObject& o) const;
 	TMappedObject mapped(model::Id table) const;
+	/** The lasting tables whose existence is at least min_existence (`inMap`) or below it, in
+	 *  store order, with their pose spreads if asked for. */
+	std::vector<TMappedObject> lastingObjects(bool inMap, bool spreads) const;
 
 	MAP_DEFINITION_START(CHierarchicalObjectMap)
 	TInsertionOptions insertionOptions;

@@ -1,5 +1,6 @@
 #pragma once
 #include <whiskermap/inference/BlackboardSampler.h>
+#include <whiskermap/inference/RigidPoseSpread.h>
 #include <whiskermap/inference/TableExistence.h>
 #include <whiskermap/model/LastingState.h>
 
@@ -89,6 +90,11 @@ class LastingMap
 	TStats insert(
 		const std::vector<obs::Shapelet>& contacts, const model::ModelParams& model,
 		const inference::SamplerParams& sampler, uint64_t seed);
+
+	/** The spread of table t's pose (doc/map-plugin.md, "Pose spread"): inference::rigidPoseSpread
+	 *  from its rigid fit, under `model` with shaft noise on (as the reported pose is fitted),
+	 *  seeded with `seed`. */
+	inference::PoseSpread poseSpread(model::Id t, const model::ModelParams& model, uint64_t seed) const;
 
 	const model::LastingState& state() const { return m_state; }
 	model::LastingState& state() { return m_state; }
