@@ -11,16 +11,32 @@
 
 namespace whiskermap::test
 {
+/** A blackboard and a MoveContext on it (default sampler parameters), for the move tests. */
+struct ContextOnBoard
+{
+	explicit ContextOnBoard(const model::ModelParams& params = {}) : P(params), bb(P), ctx(bb, P, S, rng, acceptance)
+	{
+		ctx.result = &result;
+	}
+
+	const model::ModelParams P;
+	const inference::SamplerParams S;
+	model::Blackboard bb;
+	inference::SamplerRandom rng;
+	inference::Acceptance acceptance;
+	inference::StepResult result;
+	inference::moves::MoveContext ctx;
+};
+
 /** A small random blackboard for the move tests: the contacts of 2-4 touches on a random table
  *  (1 mm position noise), one leg per touched corner explaining them, under the table or free
  *  (`withTable`), each leg refitted to its contacts; and a MoveContext on it. */
-class MoveBoard
+class MoveBoard : public ContextOnBoard
 {
    public:
 	MoveBoard(uint64_t seed, bool withTable, const model::ModelParams& params = {})
-		: P(params), bb(P), ctx(bb, P, S, rng, acceptance), m_random(seed)
+		: ContextOnBoard(params), m_random(seed)
 	{
-		ctx.result = &result;
 		rng.seed(seed);
 		std::uniform_real_distribution<double> u(0, 1);
 		const model::Table t{u(m_random) * 4 - 2, u(m_random) * 4 - 2, u(m_random) * M_PI, P.leg_width, P.texture};
@@ -66,13 +82,6 @@ class MoveBoard
 		return out;
 	}
 
-	const model::ModelParams P;
-	const inference::SamplerParams S;
-	model::Blackboard bb;
-	inference::SamplerRandom rng;
-	inference::Acceptance acceptance;
-	inference::StepResult result;
-	inference::moves::MoveContext ctx;
 	model::Id table = model::NONE;
 
    private:

@@ -35,6 +35,7 @@ StepResult BlackboardSampler::step(
 {
 	m_bb.reset(shapelets, swept);
 	m_scoredAfter = NOT_SCORED;
+	m_ctx.annealing = false;
 	StepResult result;
 	run(result, seed, snapshotTemperature);
 	return result;
@@ -44,6 +45,7 @@ StepResult BlackboardSampler::anneal(const model::Blackboard& start, uint64_t se
 {
 	m_bb = start;
 	m_scoredAfter = NOT_SCORED;
+	m_ctx.annealing = true;
 	StepResult result;
 	m_ctx.result = &result;
 	m_rng.seed(seed);

@@ -6,6 +6,7 @@ bool MoveEntry::offered(const MoveContext& ctx, double u) const
 {
 	const SamplerParams& p = ctx.sp;
 	if (slot == Slot::PolishLastSweep) return ctx.greedy() && ctx.searchPoses;
+	if (slot == Slot::PolishButLast) return ctx.greedy() && !ctx.searchPoses;
 	if (slot == Slot::Always || ctx.greedy()) return true;
 	switch (slot)
 	{

@@ -1,9 +1,11 @@
 #include <whiskermap/inference/PoseFit.h>
+#include <whiskermap/inference/moves/ContactExchange.h>
 #include <whiskermap/inference/moves/LegBirthDeath.h>
 #include <whiskermap/inference/moves/LegRefit.h>
 #include <whiskermap/inference/moves/LegReparent.h>
 #include <whiskermap/inference/moves/MoveRegistry.h>
 #include <whiskermap/inference/moves/ShapeletLink.h>
+#include <whiskermap/inference/moves/SlidingTableBirth.h>
 #include <whiskermap/inference/moves/SplitMerge.h>
 #include <whiskermap/inference/moves/TableBirthDeath.h>
 #include <whiskermap/inference/moves/TableClassSwitch.h>
@@ -128,6 +130,44 @@ struct WallJoin
 	}
 };
 
+/** The polish's sliding tables for leg l: each of its pair tables until one is accepted. */
+struct SlidingTableForLeg
+{
+	std::shared_ptr<SlidingTableBirth> move;
+	std::vector<model::Table> tables;
+
+	void operator()(MoveContext& ctx, Id l)
+	{
+		// Pair tables fitted to their legs: data-driven (not broad); the per-pose step's only
+		// (in the lasting map it cost tactile SLAM its track: doc/sampler.md, "Polish moves").
+		if (ctx.broad() || ctx.annealing) return;
+		SlidingTableBirth::candidates(ctx, l, tables);
+		for (const model::Table& t : tables)
+			if (ctx.bb.hasLeg(l) && ctx.bb.leg(l).parent == model::NONE) ctx.judge(*move, move->propose(ctx, l, t));
+	}
+};
+
+/** The polish's contact exchanges from leg l: each of its contacts to each other leg whose
+ *  perimeter is within the parent gate of it. */
+struct ExchangeFromLeg
+{
+	std::shared_ptr<ContactExchange> move;
+	std::vector<Id> own, legs;
+
+	void operator()(MoveContext& ctx, Id l)
+	{
+		if (ctx.broad() || ctx.annealing) return;  // both legs refitted to their contacts; the step's only
+		own = ctx.bb.shapeletsOf(l);
+		for (const Id s : own)
+		{
+			ctx.legsNearShapelet(static_cast<size_t>(s), legs);
+			for (const Id to : legs)
+				if (ctx.bb.shapeletParent(static_cast<size_t>(s)) == l)
+					tryMove(ctx, *move, [&] { return move->propose(ctx, static_cast<size_t>(s), to); });
+		}
+	}
+};
+
 /** The wall birth for leg l: seeded at one of its shapelets, drawn uniformly. */
 struct WallForLeg
 {
@@ -171,6 +211,8 @@ MoveRegistry::MoveRegistry(const model::ModelParams& p)
 		 [=](MoveContext& c, Id l) { tryMove(c, *legRefit, [&] { return legRefit->propose(c, l); }); }},
 		{"table for leg", Target::Leg, Slot::Parent, 1,
 		 [=](MoveContext& c, Id l) { c.judge(*tables, tables->birth(c, l)); }},
+		{"contact exchange", Target::Leg, Slot::PolishLastSweep, 1, ExchangeFromLeg{std::make_shared<ContactExchange>(), {}, {}}},
+		{"sliding table for leg", Target::Leg, Slot::PolishButLast, 1, SlidingTableForLeg{std::make_shared<SlidingTableBirth>(p), {}}},
 		// Greedy compass search of the leg's pose on its exact local log-odds (PoseFit.h); an
 		// optimiser, not a proposal: the broad baseline goes without it.
 		{"leg pose search", Target::Leg, Slot::PolishLastSweep, 1,

@@ -57,11 +57,19 @@ Table TableBirthDeath::drawCandidate(MoveContext& ctx, Id l, double& logProbabil
 // it explains.
 Proposal TableBirthDeath::birth(MoveContext& ctx, Id l)
 {
+	double logForward = 0;
+	const Table chosen = drawCandidate(ctx, l, logForward);
+	Proposal p = birthOf(ctx, l, chosen);
+	p.logForward = logForward;
+	return p;
+}
+
+Proposal TableBirthDeath::birthOf(MoveContext& ctx, Id l, Table chosen)
+{
 	model::Blackboard& bb = ctx.bb;
 	Proposal p{Move::Parent};
 	// The chosen table, fitted to all the legs it adopts (PoseFit.h; not with broad
 	// proposals), then adopting anew.
-	Table chosen = drawCandidate(ctx, l, p.logForward);
 	adoptable(bb, chosen, l, m_candidates);  // fills m_candidates with the adopted legs
 	m_candidates.push_back(l);
 	m_fitLegs.clear();

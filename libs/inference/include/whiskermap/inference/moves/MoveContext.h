@@ -33,6 +33,9 @@ class MoveContext
 	SamplerRandom& rng;
 	double beta = 1;  ///< inverse temperature; inf: the greedy polish
 	bool searchPoses = false;  ///< the polish's last sweep also searches leg poses
+	/** anneal(): an insertion into the lasting map, not a per-pose step (the polish's sliding
+	 *  table and contact exchange are the step's only: doc/sampler.md, "Polish moves"). */
+	bool annealing = false;
 	StepResult* result = nullptr;  ///< where proposals and acceptances are counted
 	/** The registry line whose move is visiting (its tally in result->moveTypes), or NO_ENTRY. */
 	size_t entry = NO_ENTRY;

@@ -16,7 +16,7 @@ enum class Target : uint8_t
 
 /** When a move is offered at a visited hypothesis, from the draw u ~ U(0, 1) per hypothesis
  *  and the thresholds r1..r4 (SamplerParams). The greedy polish offers every move but the
- *  pose search, which it offers on its last sweep only. */
+ *  pose search, which it offers on its last sweep only; it alone offers the Polish slots. */
 enum class Slot : uint8_t
 {
 	Death,  ///< u < r1
@@ -26,6 +26,9 @@ enum class Slot : uint8_t
 	Parent,  ///< u >= r4
 	Always,  ///< every visit (priming)
 	PolishLastSweep,  ///< only in the polish's last sweep
+	/** Every polish sweep but the last: a table born in the last would get no invented legs
+	 *  (a sweep visits the tables before the legs). */
+	PolishButLast,
 };
 
 /** One line of the MoveRegistry: a move offered to the hypotheses of `target` in `slot`.

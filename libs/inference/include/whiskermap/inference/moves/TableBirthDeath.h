@@ -24,6 +24,9 @@ class TableBirthDeath
 	explicit TableBirthDeath(const model::ModelParams& p) : m_backup(p) {}
 
 	Proposal birth(MoveContext& ctx, model::Id l);
+	/** The birth of table `chosen` for leg l as birth() makes it once drawn (fitted to the
+	 *  legs it adopts, adopting anew), with logForward = 0: SlidingTableBirth's first step. */
+	Proposal birthOf(MoveContext& ctx, model::Id l, model::Table chosen);
 	Proposal death(MoveContext& ctx, model::Id t);
 	void finish(MoveContext& ctx, bool accepted);
 
