@@ -1,6 +1,7 @@
 // The polish's sliding table and contact exchange (doc/sampler.md, "Moves"): each on the
 // situation it is for, against the move it improves on, and on random boards: logTarget is
 // the change of logJoint, and a rejected proposal leaves the board as it was.
+#include <whiskermap/inference/BlackboardSampler.h>
 #include <whiskermap/inference/TableProposals.h>
 #include <whiskermap/inference/moves/ContactExchange.h>
 #include <whiskermap/inference/moves/ShapeletLink.h>
@@ -161,4 +162,29 @@ TEST(PolishMoves, LogTargetIsTheChangeOfLogJointAndRejectionRestores)
 	}
 	EXPECT_GE(slides, 100);  // measured 504
 	EXPECT_GE(exchanges, 10);  // measured 18
+}
+
+// The polish moves are the per-pose step's: the lasting map's anneal never proposes them (in
+// its insertions they cost tactile SLAM its track, doc/sampler.md "Polish moves").
+TEST(PolishMoves, OnlyThePerPoseStepOffersThem)
+{
+	const model::ModelParams P;
+	// Two free legs 9 cm apart, each touched on two adjacent faces, their facing faces 4 cm
+	// apart: each leg's contacts are within the parent gate of the other (exchanges offered).
+	const double w = P.leg_width / 2;
+	const std::vector<obs::Shapelet> shapelets{
+		{0, w, M_PI_2, P.texture, 0}, {w, 0, 0, P.texture, 1}, {0.09, w, M_PI_2, P.texture, 2}, {0.09 - w, 0, M_PI, P.texture, 3}};
+	inference::BlackboardSampler sampler(P, inference::SamplerParams{});
+	const auto offered = [](const inference::StepResult& r) {
+		uint64_t n = 0;
+		for (const auto& t : r.moveTypes)
+			if (t.name == std::string("sliding table for leg") || t.name == std::string("contact exchange")) n += t.proposed;
+		return n;
+	};
+	uint64_t stepped = 0;
+	for (uint64_t seed = 0; seed < 5; seed++) stepped += offered(sampler.step(shapelets, seed));
+	EXPECT_GT(stepped, 0u);
+	model::Blackboard start(P);
+	start.reset(shapelets);
+	for (uint64_t seed = 0; seed < 5; seed++) EXPECT_EQ(offered(sampler.anneal(start, seed)), 0u) << seed;
 }
