@@ -145,9 +145,10 @@ int WhiskerEvalApp::main(int argc, char** argv)
 	app.add_option(
 		"-m,--map", o.map,
 		"Consolidated map CSV written by whisker-map (map_tables.csv: id,x,y,yaw_deg,length,"
-		"width,leg_width,texture,existence,contacts,legs[,class]): scored as written; optional with "
-		"--path. Objects match only within their class (no class column: all are tables); with "
-		"a class column it also reports class accuracy and dimension errors");
+		"width,leg_width,texture,existence,contacts,legs[,sd_x,sd_y,sd_yaw_deg][,class]): scored as "
+		"written; optional with --path. Objects match only within their class (no class column: all "
+		"are tables); with a class column it also reports class accuracy and dimension errors, with "
+		"the spread columns how well the reported pose spreads cover the truth");
 	app.add_option(
 		"--walls", o.walls,
 		"Estimated walls CSV (map_walls.csv: x0,y0,x1,y1,thickness,existence), scored as written "
