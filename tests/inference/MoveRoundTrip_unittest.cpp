@@ -274,3 +274,49 @@ TEST(MoveRoundTrip, AMoveThatCountsNoAcceptanceLeavesTheBoardAsItWas)
 	}
 	EXPECT_GE(unchanged, 1000);
 }
+
+// Under the reversible-jump acceptance a leg refit is stochastic (doc/sampler.md, "Moves"):
+// the fit plus Gaussian noise. Its forward density is that of the new pose about the fit from
+// the old board, its reverse that of the old pose about the fit from the new board, computed
+// here independently; so the move from the new board back to the old one has exactly the
+// negated log ratio. logTarget is the change of logJoint; a rejection restores the board.
+TEST(MoveRoundTrip, StochasticLegRefitUnderReversibleJump)
+{
+	inference::SamplerParams rj;
+	rj.acceptance = inference::AcceptanceRule::ReversibleJump;
+	const auto logDensity = [&](const model::Leg& leg, const model::Leg& fit) {
+		const double sp = rj.leg_position_noise, sa = rj.leg_angle_noise;
+		const double dx = leg.x - fit.x, dy = leg.y - fit.y, da = std::remainder(leg.theta - fit.theta, 2 * M_PI);
+		return -0.5 * (dx * dx + dy * dy) / (sp * sp) - 0.5 * da * da / (sa * sa) - 2 * std::log(sp * std::sqrt(2 * M_PI)) -
+			   std::log(sa * std::sqrt(2 * M_PI));
+	};
+	int checked = 0;
+	for (uint64_t seed = 0; seed < BOARDS; seed++)
+	{
+		MoveBoard b(seed, seed % 2);
+		inference::moves::MoveContext ctx(b.bb, b.P, rj, b.rng, b.acceptance);
+		ctx.result = &b.result;
+		const Id l = b.legs()[b.pick(b.legs().size())];
+		const model::Leg old = b.bb.leg(l);
+		const model::Table* t = old.parent == NONE ? nullptr : &b.bb.table(old.parent);
+		model::Leg fit;
+		if (!ctx.fittedLeg(l, t, fit)) continue;
+		const double before = model::logJoint(b.bb);
+		inference::moves::LegRefit move;
+		const auto p = move.propose(ctx, l);
+		ASSERT_TRUE(p.has_value());
+		const model::Leg drawn = b.bb.leg(l);
+		EXPECT_NEAR(model::logJoint(b.bb) - before, p->logTarget, 1e-7);
+		EXPECT_NEAR(p->logForward, logDensity(drawn, fit), 1e-9);
+		model::Leg back;
+		ASSERT_TRUE(ctx.fittedLeg(l, t, back));
+		EXPECT_NEAR(p->logReverse, logDensity(old, back), 1e-9);
+		EXPECT_TRUE(std::isfinite(p->logReverse));
+		move.finish(ctx, false);
+		EXPECT_EQ(b.bb.leg(l).x, old.x);
+		EXPECT_EQ(b.bb.leg(l).theta, old.theta);
+		EXPECT_NEAR(model::logJoint(b.bb), before, 1e-12);
+		checked++;
+	}
+	EXPECT_GE(checked, 40);
+}

@@ -9,7 +9,12 @@ namespace whiskermap::inference::moves
  *  parent's corner (PoseFit.h). Deterministic (logForward = 0) and idempotent, so no move
  *  proposes the old pose back: logReverse = -inf unless the pose did not change (0). The
  *  polish uses it as a greedy improvement, where densities play no part. With broad
- *  proposals it is a symmetric random-walk step (MoveContext::randomWalk; logReverse = 0). */
+ *  proposals it is a symmetric random-walk step (MoveContext::randomWalk; logReverse = 0).
+ *  Under the reversible-jump acceptance at finite beta it is stochastic, so that it has a
+ *  reverse: the fit plus N(0, leg_position_noise^2) per axis and N(0, leg_angle_noise^2) in
+ *  yaw; logForward is that density of the new pose about the fit from the old board,
+ *  logReverse the density of the old pose about the fit from the new board (its texture must
+ *  be the fit's). */
 class LegRefit
 {
    public:
@@ -20,6 +25,8 @@ class LegRefit
 	/** 0 if `before` and `after` have the same pose and texture, else -inf: the reverse
 	 *  density of a deterministic refit. */
 	static double logReverseOfRefit(const model::Leg& before, const model::Leg& after);
+	/** log density of a stochastic refit drawing `leg` about `fit` (texture: the fit's, else -inf). */
+	static double logDrawnAbout(const MoveContext& ctx, const model::Leg& leg, const model::Leg& fit);
 
    private:
 	model::Id m_leg = model::NONE;
