@@ -47,9 +47,13 @@ const std::vector<Field>& fieldsOf<maps::TMappedObject>()
 		// The table's fields first (flattened), then the object's own.
 		std::vector<Field> all;
 		for (auto t : fieldsOf<world::Table>()) all.push_back({t.name, t.format, offsetof(O, table) + t.offset, t.size});
-		for (auto o : {WM_FIELD(O, existence, "f8"), WM_FIELD(O, contacts, "u8"), WM_FIELD(O, legs, "u4"),
-					   WM_FIELD(O, sd_x, "f8"), WM_FIELD(O, sd_y, "f8"), WM_FIELD(O, sd_yaw, "f8")})
+		for (auto o : {WM_FIELD(O, existence, "f8"), WM_FIELD(O, contacts, "u8"), WM_FIELD(O, legs, "u4")})
 			all.push_back(o);
+		for (auto o : {WM_FIELD(O, sd_x, "f8"), WM_FIELD(O, sd_y, "f8"), WM_FIELD(O, sd_yaw, "f8")})
+		{
+			o.optional = true;  // the pose spread: NaN when an input array lacks it
+			all.push_back(o);
+		}
 		return all;
 	}();
 	return f;

@@ -2,7 +2,7 @@
 // C++ structs as numpy structured arrays, field by field (names and units of the structs).
 // Out: one record per element, the struct's fields packed (no padding: no stray bytes).
 // In: any structured array that has the fields by name (packed or not, extra fields
-// ignored), each field converted to the struct member's type.
+// ignored; optional ones may be missing), each field converted to the struct member's type.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <whiskermap/core/Error.h>
@@ -24,12 +24,14 @@ namespace whiskermap::python
 namespace py = pybind11;
 
 /** One member of a struct: numpy field name, numpy format ("f8", "?", "i4", "u4", "u8"),
- *  byte offset and size in the struct. */
+ *  byte offset and size in the struct; an optional one may be missing from an input array
+ *  (the member keeps its default). */
 struct Field
 {
 	const char* name;
 	const char* format;
 	size_t offset, size;
+	bool optional = false;
 };
 
 /** The fields of a struct, in order: specialised in Records.cpp for these. */
@@ -86,7 +88,10 @@ std::vector<T> fromArray(const py::handle& obj, const std::string& what)
 	for (const auto& f : fieldsOf<T>())
 	{
 		if (std::find(names.begin(), names.end(), f.name) == names.end())
+		{
+			if (f.optional) continue;
 			throw core::Error(what + ": no field '" + f.name + "'");
+		}
 		const py::array col = np.attr("ascontiguousarray")(a[py::str(f.name)], py::str(f.format));
 		const auto* src = static_cast<const char*>(col.data());
 		if (static_cast<size_t>(col.itemsize()) != f.size) throw std::logic_error(std::string("field size of ") + f.name);

@@ -77,7 +77,7 @@ def test_bad_sweeps_name_the_whisker_and_field():
     assert "whisker" in raised(wm.Sweep, w[:0])  # no whiskers at all
 
 
-def test_map_argument_errors(dataset):
+def test_map_argument_errors(dataset, tmp_path):
     assert raised(wm.Map, mode="sideways") == "mode 'sideways': expected 'lasting' or 'per_pose'"
     m = wm.Map()
     with pytest.raises(wm.WhiskermapError):
@@ -85,6 +85,14 @@ def test_map_argument_errors(dataset):
     _, sweep = wm.read_rawlog(str(dataset))[0]
     assert "(n, 3)" in raised(m.likelihoods, sweep, np.zeros((4, 2)))
     assert "no field 'yaw'" in raised(wm.write_objects_csv, "x.csv", np.zeros(2, dtype=[("x", "f8"), ("y", "f8")]))
+    # The pose spread is optional in an input array; the spread columns need it.
+    plain = [f for f in wm.OBJECT_DTYPE.names if not f.startswith("sd_")]
+    objs = np.zeros(1, dtype=[(f, wm.OBJECT_DTYPE[f]) for f in plain])
+    objs["length"], objs["width"], objs["leg_width"] = 1.0, 0.6, 0.05
+    wm.write_objects_csv(str(tmp_path / "map.csv"), objs)
+    assert (tmp_path / "map.csv").read_text().startswith("id,x,y,yaw_deg,length,width,leg_width,texture,existence,contacts,legs\n0,")
+    assert "has no pose spread" in raised(wm.write_objects_csv, str(tmp_path / "spread.csv"), objs, spreads=True)
+    assert not (tmp_path / "spread.csv").exists()
     assert "expected 'obs' or 'action-sf'" in raised(wm.RawlogWriter, "x.rawlog", format="csv")
 
 
