@@ -41,7 +41,7 @@ TEST(SpreadCoverage, MatchedObjectsOnlyAndYawModuloTheSymmetry)
 	rows[1].table = b, rows[1].table.y -= 0.001;  // no spread column: skipped
 	rows[2].table = {9, 9, 0, 1.0, 0.6, 0.05, 0.7};  // matches nothing
 	rows[2].spread = eval::TableCsv::MapRow::Spread{0.002, 0.001, 1.0};
-	const SpreadCoverage c = SpreadCoverage::of({a, b}, rows, {});
+	const SpreadCoverage c = SpreadCoverage::of({a, b}, rows, eval::EvalOptions{});
 	ASSERT_EQ(c.count(), 1u);
 	EXPECT_NEAR(c.rmsZ(0), 1.5, 1e-9);
 	EXPECT_NEAR(c.rmsZ(1), 0.0, 1e-9);

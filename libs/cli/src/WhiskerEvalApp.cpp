@@ -80,7 +80,7 @@ int run(const Options& o)
 	const auto rows = eval::TableCsv::readMap(o.map, &hasClass);
 	const auto estimated = eval::TableCsv::tables(rows);
 	report.map = eval::MapEvaluation::compute(w.tables, estimated, o.eval, hasClass);
-	if (!rows.empty() && rows.front().spread) report.spread = eval::SpreadCoverage::of(w.tables, rows, o.eval, hasClass);
+	if (!rows.empty() && rows.front().spread) report.spread = eval::SpreadCoverage::of(w.tables, rows, report.map->truthMatch);
 	std::vector<world::Wall> estimatedWalls;
 	if (!o.walls.empty())
 		for (const auto& r : eval::TableCsv::readWalls(o.walls)) estimatedWalls.push_back(r.wall);

@@ -6,18 +6,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "JsonNumber.h"
+
 namespace whiskermap::eval
 {
-namespace
-{
-std::string num(double v)
-{
-	if (std::isnan(v)) return "null";
-	char buf[32];
-	std::snprintf(buf, sizeof(buf), "%.6f", v);
-	return buf;
-}
-}  // namespace
+using detail::num;
 
 double Calibration::Bin::meanExistence() const { return count ? sumExistence / count : NAN; }
 double Calibration::Bin::fractionReal() const { return count ? static_cast<double>(real) / count : NAN; }

@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "JsonNumber.h"
+
 namespace whiskermap::eval
 {
 namespace
@@ -26,14 +28,7 @@ const FigureRow FIGURE_ROWS[] = {
 	{"count_error", "count error", &Figures::count_error},
 };
 
-/** `v` with `decimals` decimals, or `undefined` when NaN. */
-std::string num(double v, int decimals, const char* undefined = "null")
-{
-	if (std::isnan(v)) return undefined;
-	char buf[64];
-	std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
-	return buf;
-}
+using detail::num;
 
 using Fields = std::vector<std::pair<std::string, std::string>>;  // key, JSON value
 

@@ -5,20 +5,15 @@
 #include <cmath>
 #include <cstdio>
 
+#include "JsonNumber.h"
+
 namespace whiskermap::eval
 {
 namespace
 {
 constexpr const char* AXES[3] = {"x", "y", "yaw"};
-
-std::string num(double v)
-{
-	if (std::isnan(v)) return "null";
-	char buf[64];
-	std::snprintf(buf, sizeof(buf), "%.6f", v);
-	return buf;
-}
 }  // namespace
+using detail::num;
 
 void SpreadCoverage::add(const std::array<double, 3>& error, const std::array<double, 3>& sd)
 {
@@ -47,12 +42,18 @@ SpreadCoverage SpreadCoverage::of(
 	const std::vector<world::Table>& truth, const std::vector<TableCsv::MapRow>& rows, const EvalOptions& opts,
 	bool hasClass)
 {
-	const MapEvaluation m = MapEvaluation::compute(truth, TableCsv::tables(rows), opts, hasClass);
+	return of(truth, rows, MapEvaluation::compute(truth, TableCsv::tables(rows), opts, hasClass).truthMatch);
+}
+
+SpreadCoverage SpreadCoverage::of(
+	const std::vector<world::Table>& truth, const std::vector<TableCsv::MapRow>& rows,
+	const std::vector<int>& truthMatch)
+{
 	SpreadCoverage c;
 	for (size_t i = 0; i < truth.size(); i++)
 	{
-		if (m.truthMatch[i] < 0) continue;
-		const TableCsv::MapRow& r = rows[static_cast<size_t>(m.truthMatch[i])];
+		if (truthMatch[i] < 0) continue;
+		const TableCsv::MapRow& r = rows[static_cast<size_t>(truthMatch[i])];
 		if (!r.spread) continue;
 		c.add({r.table.x - truth[i].x, r.table.y - truth[i].y, MapEvaluation::yawError(truth[i], r.table)},
 			  {r.spread->x, r.spread->y, core::deg2rad(r.spread->yaw_deg)});

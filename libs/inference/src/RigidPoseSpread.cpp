@@ -1,3 +1,4 @@
+#include <whiskermap/inference/FiniteDifferences.h>
 #include <whiskermap/inference/RigidPoseSpread.h>
 #include <whiskermap/inference/RigidTableFit.h>
 #include <whiskermap/inference/SamplerRandom.h>
@@ -22,20 +23,9 @@ model::Table moved(model::Table t, const Eigen::Vector3d& u)
 template <class Score>
 Eigen::Matrix3d proposalRoot(const model::Table& start, double value, const Score& score)
 {
-	const Eigen::Vector3d h(1e-4, 1e-4, 1e-4);
+	Eigen::Vector3d g;
 	Eigen::Matrix3d H;
-	Eigen::Vector3d fp, fm;
-	for (int i = 0; i < 3; i++)
-	{
-		const Eigen::Vector3d e = h[i] * Eigen::Vector3d::Unit(i);
-		fp[i] = score(moved(start, e)), fm[i] = score(moved(start, -e));
-		H(i, i) = (fp[i] - 2 * value + fm[i]) / (h[i] * h[i]);
-	}
-	for (int i = 0; i < 3; i++)
-		for (int j = i + 1; j < 3; j++)
-			H(i, j) = H(j, i) =
-				(score(moved(start, h[i] * Eigen::Vector3d::Unit(i) + h[j] * Eigen::Vector3d::Unit(j))) - fp[i] - fp[j] +
-				 value) / (h[i] * h[j]);
+	finiteDifferences([&](const Eigen::Vector3d& u) { return score(moved(start, u)); }, value, 1e-4, g, H);
 	const Eigen::LLT<Eigen::Matrix3d> curvature(-H);
 	if (curvature.info() == Eigen::Success && H.allFinite())
 	{

@@ -1,3 +1,4 @@
+#include <whiskermap/inference/FiniteDifferences.h>
 #include <whiskermap/inference/RigidTableFit.h>
 #include <whiskermap/model/Densities.h>
 
@@ -60,18 +61,9 @@ model::Table fitRigidTable(const model::LastingState& s, model::Id t, const mode
 	constexpr double h = 1e-4;
 	for (int it = 0; it < 4; it++)
 	{
-		Eigen::Vector3d g, fp, fm;
+		Eigen::Vector3d g;
 		Eigen::Matrix3d H;
-		for (int i = 0; i < 3; i++)
-		{
-			const Eigen::Vector3d e = h * Eigen::Vector3d::Unit(i);
-			fp[i] = score(at(best, e)), fm[i] = score(at(best, -e));
-			g[i] = (fp[i] - fm[i]) / (2 * h), H(i, i) = (fp[i] - 2 * value + fm[i]) / (h * h);
-		}
-		for (int i = 0; i < 3; i++)
-			for (int j = i + 1; j < 3; j++)
-				H(i, j) = H(j, i) = (score(at(best, h * Eigen::Vector3d::Unit(i) + h * Eigen::Vector3d::Unit(j))) - fp[i] -
-									 fp[j] + value) / (h * h);
+		finiteDifferences([&](const Eigen::Vector3d& u) { return score(at(best, u)); }, value, h, g, H);
 		const Eigen::LDLT<Eigen::Matrix3d> ldlt(-H);
 		if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) break;  // not a maximum nearby: search only
 		Eigen::Vector3d u = ldlt.solve(g);

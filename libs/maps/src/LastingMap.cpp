@@ -100,8 +100,7 @@ void LastingMap::refitReported(const model::ModelParams& model)
 		if (l != model::NONE) m_refit.push_back(m_state.leg(l).parent);
 	std::sort(m_refit.begin(), m_refit.end());
 	m_refit.erase(std::unique(m_refit.begin(), m_refit.end()), m_refit.end());
-	model::ModelParams shaft = model;
-	shaft.shaft_noise = true;  // the reading errs along its shaft (contacts without one: isotropic)
+	const model::ModelParams shaft = reportModel(model);
 	for (const model::Id t : m_refit)
 		if (t != model::NONE && m_state.hasTable(t) && !std::binary_search(kept.begin(), kept.end(), t))
 			m_state.setReported(t, inference::fitRigidTable(m_state, t, shaft));
@@ -109,9 +108,15 @@ void LastingMap::refitReported(const model::ModelParams& model)
 
 inference::PoseSpread LastingMap::poseSpread(model::Id t, const model::ModelParams& model, uint64_t seed) const
 {
-	model::ModelParams shaft = model;
-	shaft.shaft_noise = true;  // as refitReported fits the reported pose
+	const model::ModelParams shaft = reportModel(model);
 	return inference::rigidPoseSpread(m_state, t, inference::fitRigidTable(m_state, t, shaft), shaft, seed);
+}
+
+model::ModelParams LastingMap::reportModel(const model::ModelParams& model)
+{
+	model::ModelParams shaft = model;
+	shaft.shaft_noise = true;  // the reading errs along its shaft (contacts without one: isotropic)
+	return shaft;
 }
 
 LastingMap::TStats LastingMap::insert(

@@ -33,6 +33,10 @@ class SpreadCoverage
 	static SpreadCoverage of(
 		const std::vector<world::Table>& truth, const std::vector<TableCsv::MapRow>& rows, const EvalOptions& opts,
 		bool hasClass = false);
+	/** The same with the matching already made (MapEvaluation::truthMatch of `rows`' tables). */
+	static SpreadCoverage of(
+		const std::vector<world::Table>& truth, const std::vector<TableCsv::MapRow>& rows,
+		const std::vector<int>& truthMatch);
 
 	size_t count() const { return m_count; }
 	const std::array<Axis, 3>& axes() const { return m_axes; }

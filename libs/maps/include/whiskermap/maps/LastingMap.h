@@ -116,6 +116,9 @@ class LastingMap
 	 *  oldest again when none is), its figures into `out`; false when no leg holds a contact. */
 	bool reviseNext(
 		const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed, TStats& out);
+	/** The model the reported poses are fitted (and their spreads scored) with: `model` with
+	 *  shaft noise on. */
+	static model::ModelParams reportModel(const model::ModelParams& model);
 	/** Existence of each table of `solved` (grown from `start`, the region's board). */
 	std::vector<double> existence(
 		const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model);
