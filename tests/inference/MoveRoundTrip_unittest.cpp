@@ -320,3 +320,28 @@ TEST(MoveRoundTrip, StochasticLegRefitUnderReversibleJump)
 	}
 	EXPECT_GE(checked, 40);
 }
+
+// With zero refit noise the stochastic refit is the closed form: its densities are point
+// masses (0 at the fit, -inf elsewhere), never NaN (which the acceptance would take for 1).
+TEST(MoveRoundTrip, StochasticLegRefitWithZeroNoiseIsAPointMass)
+{
+	inference::SamplerParams rj;
+	rj.acceptance = inference::AcceptanceRule::ReversibleJump;
+	rj.leg_position_noise = rj.leg_angle_noise = 0;
+	int checked = 0;
+	for (uint64_t seed = 0; seed < BOARDS; seed++)
+	{
+		MoveBoard b(seed, seed % 2);
+		inference::moves::MoveContext ctx(b.bb, b.P, rj, b.rng, b.acceptance);
+		ctx.result = &b.result;
+		inference::moves::LegRefit move;
+		const auto p = move.propose(ctx, b.legs()[0]);
+		if (!p) continue;
+		EXPECT_EQ(p->logForward, 0);
+		EXPECT_FALSE(std::isnan(p->logReverse));
+		EXPECT_TRUE(p->logReverse == 0 || p->logReverse == -std::numeric_limits<double>::infinity()) << p->logReverse;
+		move.finish(ctx, false);
+		checked++;
+	}
+	EXPECT_GE(checked, 40);
+}

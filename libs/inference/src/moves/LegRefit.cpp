@@ -44,7 +44,8 @@ void LegRefit::finish(MoveContext& ctx, bool accepted)
 double LegRefit::logDrawnAbout(const MoveContext& ctx, const model::Leg& leg, const model::Leg& fit)
 {
 	if (leg.texture != fit.texture || leg.wx != fit.wx || leg.wy != fit.wy) return -std::numeric_limits<double>::infinity();
-	const auto logGaussian = [](double d, double sigma) {
+	const auto logGaussian = [](double d, double sigma) {  // zero noise: a point mass at the fit
+		if (!(sigma > 0)) return d == 0 ? 0.0 : -std::numeric_limits<double>::infinity();
 		return -0.5 * (d / sigma) * (d / sigma) - std::log(sigma * std::sqrt(2 * M_PI));
 	};
 	return logGaussian(leg.x - fit.x, ctx.sp.leg_position_noise) + logGaussian(leg.y - fit.y, ctx.sp.leg_position_noise) +

@@ -25,7 +25,8 @@ class LegRefit
 	/** 0 if `before` and `after` have the same pose and texture, else -inf: the reverse
 	 *  density of a deterministic refit. */
 	static double logReverseOfRefit(const model::Leg& before, const model::Leg& after);
-	/** log density of a stochastic refit drawing `leg` about `fit` (texture: the fit's, else -inf). */
+	/** log density of a stochastic refit drawing `leg` about `fit` (texture: the fit's, else
+	 *  -inf); a zero noise makes its coordinate a point mass (0 at the fit, else -inf). */
 	static double logDrawnAbout(const MoveContext& ctx, const model::Leg& leg, const model::Leg& fit);
 
    private:
