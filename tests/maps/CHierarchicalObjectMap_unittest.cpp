@@ -144,6 +144,7 @@ TEST(CHierarchicalObjectMap, OfficeConfigNamesTheObjectCatalogue)
 	mrpt::maps::CMultiMetricMap plain(maps::MapConfig::load(CONFIG));
 	EXPECT_TRUE(plain.mapByClass<CHierarchicalObjectMap>()->modelParams.classes.empty());
 	EXPECT_TRUE(map->modelParams.size_moves);  // office-map.ini infers sizes (eq. 24)
+	EXPECT_TRUE(map->modelParams.free_space);  // and rules out walls across swept floor (eq. 25)
 	EXPECT_FALSE(plain.mapByClass<CHierarchicalObjectMap>()->modelParams.size_moves);
 	// size_moves (eq. 24) needs the catalogue: without one the config is refused by name.
 	std::ifstream in(CONFIG);

@@ -9,8 +9,10 @@
 #include <whiskermap/maps/LastingMap.h>
 #include <whiskermap/maps/SweepLikelihood.h>
 #include <whiskermap/model/ObjectCatalogue.h>
+#include <whiskermap/model/SweptGrid.h>
 #include <whiskermap/obs/RawlogReader.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -89,6 +91,46 @@ TEST(WallMap, ALineOfContactsBecomesAWallAndNoChair)
 	EXPECT_GT(plain.state().legCount(), 3u);
 }
 
+TEST(WallMap, NoWallAcrossCellsTheWhiskersSweptAndNeverTouched)
+{
+	// Four spots 0.3 m apart on the line y = 0.05, each touched on its +y face, as collinear
+	// legs are: one wall explains them all (without free space). The robot swept the floor
+	// between the spots 20 times and touched nothing there: eq. 25 rules the wall out.
+	model::SweptGrid grid(0.1);
+	for (int32_t ix = -1; ix <= 10; ix++)
+		for (const int32_t iy : {-1, 0})
+			grid.set(ix, iy, ix >= 0 && ix % 3 == 0 ? model::SweptGrid::Cell{0, 20} : model::SweptGrid::Cell{20, 0});
+	const auto run = [&](bool freeSpace)
+	{
+		model::ModelParams p;
+		p.classes = model::ObjectCatalogue::load(SRC + "/config/objects.ini");
+		p.walls = true;
+		p.free_space = freeSpace;
+		const inference::SamplerParams s;
+		maps::LastingMap m;
+		std::mt19937_64 rng(7);
+		std::normal_distribution<double> n(0, 1);
+		for (int k = 0; k < 40; k++)
+		{
+			std::vector<obs::Shapelet> sweep;
+			for (const int spot : {k % 4, (k + 1) % 4})
+			{
+				obs::Shapelet c;
+				c.x = 0.3 * spot + 0.05 + 0.003 * n(rng), c.y = 0.05 + 0.003 * n(rng);
+				c.normal = M_PI_2 + 0.05 * n(rng), c.texture = 0.3 + 0.02 * n(rng);
+				sweep.push_back(c);
+			}
+			m.insert(sweep, p, s, 1000 + static_cast<uint64_t>(k), &grid);
+		}
+		double length = 0;
+		for (const auto& w : m.state().walls())
+			if (w.existence >= 0.5) length += w.wall.length();
+		return length;
+	};
+	EXPECT_GT(run(false), 0.55);  // the grid is ignored: a wall from spot to spot (3 of the 4)
+	EXPECT_LT(run(true), 0.2);  // at most a wall within one spot's touched cells
+}
+
 TEST(WallMap, SerializationKeepsTheWallsAndContinues)
 {
 	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/office/default.rawlog");
@@ -114,6 +156,52 @@ TEST(WallMap, SerializationKeepsTheWallsAndContinues)
 	for (size_t i = half; i < half + 60 && i < rawlog.sweeps.size(); i++)
 		for (auto* m : {&a, b.get()}) m->insertObservation(*rawlog.sweeps[i].obs, mrpt::poses::CPose3D(rawlog.sweeps[i].robotPose));
 	EXPECT_TRUE(same(a, *b));
+}
+
+TEST(WallMap, VersionNineStreamsLoadTheWallsWithoutEndCapCosts)
+{
+	// Version 10 appends to each wall's folded evidence the frozen cost of its end caps'
+	// contacts; a version 9 stream (the same bytes without it) loads with that cost 0.
+	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/office/default.rawlog");
+	maps::CHierarchicalObjectMap a;
+	a.modelParams.classes = model::ObjectCatalogue::load(SRC + "/config/objects.ini");
+	a.modelParams.walls = true;
+	for (size_t i = 0; i < std::min<size_t>(rawlog.sweeps.size(), 400); i++)
+		a.insertObservation(*rawlog.sweeps[i].obs, mrpt::poses::CPose3D(rawlog.sweeps[i].robotPose));
+	const auto& walls = a.lastingMap().state().walls();
+	ASSERT_FALSE(walls.empty());
+	mrpt::io::CMemoryStream buf;
+	mrpt::serialization::archiveFrom(buf) << a;
+	const auto* begin = static_cast<const uint8_t*>(buf.getRawBufferData());
+	std::vector<uint8_t> bytes(begin, begin + buf.getTotalBytesCount());
+	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
+	ASSERT_EQ(bytes[1 + name.size()], 10);
+	bytes[1 + name.size()] = 9;
+	for (const auto& w : walls)
+	{
+		// Each wall's record: x0, y0, x1, y1, thickness, texture, existence, the evidence's
+		// STATS numbers (the last the caps' cost), its count.
+		const double head[7] = {w.wall.x0, w.wall.y0, w.wall.x1, w.wall.y1, w.wall.thickness, w.wall.texture, w.existence};
+		const auto* h = reinterpret_cast<const uint8_t*>(head);
+		const auto at = std::search(bytes.begin(), bytes.end(), h, h + sizeof head);
+		ASSERT_NE(at, bytes.end());
+		const auto cap = at + static_cast<long>(sizeof head + 8 * model::WallEvidence::STATS_BEFORE_CAPS);
+		bytes.erase(cap, cap + 8);
+	}
+	mrpt::io::CMemoryStream old;
+	old.assignMemoryNotOwn(bytes.data(), bytes.size());
+	const auto b = std::dynamic_pointer_cast<maps::CHierarchicalObjectMap>(mrpt::serialization::archiveFrom(old).ReadObject());
+	ASSERT_TRUE(b);
+	const auto& back = b->lastingMap().state().walls();
+	ASSERT_EQ(back.size(), walls.size());
+	for (size_t i = 0; i < walls.size(); i++)
+	{
+		EXPECT_TRUE(back[i].wall.sameAs(walls[i].wall, 0));
+		auto expected = walls[i].evidence.stats();
+		expected.back() = 0;
+		EXPECT_EQ(back[i].evidence.stats(), expected) << i;
+		EXPECT_EQ(back[i].evidence.count(), walls[i].evidence.count());
+	}
 }
 
 TEST(WallMap, MappedWallsAreSolidsTheSweepLikelihoodPredictsContactsOn)

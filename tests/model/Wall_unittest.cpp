@@ -83,6 +83,29 @@ TEST(Wall, ShapeletDensityByHand)
 	EXPECT_EQ(bestWallFace(contact(1, 0.05, -M_PI_2, 0.3), wall, p), -1);
 }
 
+TEST(Wall, EndCapsByHand)
+{
+	const ModelParams p = handParams();
+	// Cap +2 at (2, 0), outward normal +x; cap -2 at (0, 0), normal -x; each 0.1 m wide.
+	const Wall::FaceHit a = wall.hit(2.03, 0.01, 2);
+	EXPECT_NEAR(a.across, 0.03, 1e-12);
+	EXPECT_NEAR(a.along, 0.01, 1e-12);
+	EXPECT_EQ(a.excess, 0);
+	EXPECT_NEAR(a.normal, 0, 1e-12);
+	const Wall::FaceHit b = wall.hit(-0.1, 0.08, -2);
+	EXPECT_NEAR(b.across, 0.1, 1e-12);
+	EXPECT_NEAR(b.excess, 0.03, 1e-12);
+	EXPECT_NEAR(std::abs(b.normal), M_PI, 1e-12);
+	EXPECT_NEAR(wall.hit(1, 0.07, 1).across, wall.face(1, 0.07, 1).across, 0);  // long faces as face()
+	// 1 cm outside cap +2 (1 sigma_r), its own normal: log p = 3 - 1 (eq. 22 on the cap).
+	EXPECT_NEAR(logShapeletGivenWall(contact(2.01, 0.02, 0, 0.3), wall, p), 2, 1e-9);
+	EXPECT_EQ(bestWallFace(contact(2.01, 0.02, 0, 0.3), wall, p), 2);
+	// 2 cm outside cap -2 and 2 cm past the slab's side: 3 - 4 - 4; face -1, 2 cm from its
+	// corner, would add a quarter turn of normal error.
+	EXPECT_NEAR(logShapeletGivenWall(contact(-0.02, -0.07, M_PI, 0.3), wall, p), -5, 1e-9);
+	EXPECT_EQ(bestWallFace(contact(-0.02, -0.07, M_PI, 0.3), wall, p), -2);
+}
+
 TEST(Wall, PriorByHand)
 {
 	const ModelParams p = handParams();
@@ -117,6 +140,27 @@ TEST(WallEvidence, SumsTheDensitiesAndFitsTheWall)
 	EXPECT_NEAR(std::max(fit.x0, fit.x1), 1.7, 0.01);
 	EXPECT_NEAR((fit.y0 + fit.y1) / 2, 0.0, 0.005);
 	// Round trip of the statistics.
+	EXPECT_EQ(WallEvidence::fromStats(e.stats(), e.count()), e);
+}
+
+TEST(WallEvidence, EndCapContactsAreFrozenAndStretchTheExtent)
+{
+	const ModelParams p = handParams();
+	WallEvidence e;
+	std::vector<Shapelet> contacts;
+	for (int i = 0; i <= 4; i++) contacts.push_back(contact(0.2 + 0.3 * i, 0.05 + 0.001 * i, M_PI_2, 0.3));
+	contacts.push_back(contact(2.004, 0.01, 0.02, 0.32));  // on cap +2, past the last long-face contact
+	double sum = 0;
+	for (const Shapelet& s : contacts) e.add(s, wall, p), sum += logShapeletGivenWall(s, wall, p);
+	EXPECT_EQ(e.count(), contacts.size());
+	// At the pose they were folded at, the sum is eq. 22's, the cap's term included.
+	EXPECT_NEAR(e.logLikelihood(wall, p), sum, 1e-6);
+	EXPECT_GT(e.stats().back(), 0);  // the cap's frozen cost: 0.4^2 + 0.2^2
+	EXPECT_NEAR(e.stats().back(), 0.16 + 0.04, 1e-9);
+	// The fit's extent reaches the cap's contact; its line stays the long face's.
+	const Wall fit = e.fit(0.1);
+	EXPECT_NEAR(std::max(fit.x0, fit.x1), 2.004, 1e-3);
+	EXPECT_NEAR((fit.y0 + fit.y1) / 2, 0.002, 0.003);
 	EXPECT_EQ(WallEvidence::fromStats(e.stats(), e.count()), e);
 }
 

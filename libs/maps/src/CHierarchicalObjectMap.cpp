@@ -228,7 +228,7 @@ void CHierarchicalObjectMap::insertLasting(const obs::CObservationWhiskerContact
 	m_lastNoise = sweep.noise;
 	m_steps++;
 	m_lasting.setOptions(insertionOptions.lasting);
-	m_lastLasting = m_lasting.insert(in.shapelets, in.model, samplerParams, in.seed);
+	m_lastLasting = m_lasting.insert(in.shapelets, in.model, samplerParams, in.seed, &m_sweptGrid);
 	inference::addMoveCounts(m_proposed, m_accepted, m_moveTypes, m_lastLasting);
 	if (insertionOptions.keep_history)
 	{

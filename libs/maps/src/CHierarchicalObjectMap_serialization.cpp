@@ -5,7 +5,7 @@
 // (the likelihood then knows no free space); versions before 6 with sigma_corner = sigma_r and
 // no revisions; versions before 7 without the counts per move type; versions before 8 without
 // size moves (every lasting table at its class's size); versions before 9 without the last
-// insertion's sensor noise.
+// insertion's sensor noise; versions before 10 without the walls' end-cap costs (0).
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/model/ObjectCatalogue.h>
@@ -190,7 +190,7 @@ void writeWalls(CArchive& out, const model::ModelParams& m, const model::Lasting
 	}
 }
 
-void readWalls(CArchive& in, model::ModelParams& m, std::vector<model::LastingState::StoredWall>& walls)
+void readWalls(CArchive& in, model::ModelParams& m, std::vector<model::LastingState::StoredWall>& walls, uint8_t version)
 {
 	in >> m.walls >> m.c_W >> m.wall_length_scale >> m.wall_thickness;
 	const auto n = in.ReadAs<uint32_t>();
@@ -200,7 +200,10 @@ void readWalls(CArchive& in, model::ModelParams& m, std::vector<model::LastingSt
 	{
 		in >> w.wall.x0 >> w.wall.y0 >> w.wall.x1 >> w.wall.y1 >> w.wall.thickness >> w.wall.texture >> w.existence;
 		std::array<double, model::WallEvidence::STATS> v{};
-		for (double& x : v) in >> x;
+		const size_t known = version >= 10 ? v.size() : model::WallEvidence::STATS_BEFORE_CAPS;
+		for (size_t i = 0; i < known; i++) in >> v[i];
+		if (!std::isfinite(v.back()) || v.back() < 0)
+			THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (wall end-cap cost not a number >= 0)");
 		w.evidence = model::WallEvidence::fromStats(v, in.ReadAs<uint32_t>());
 	}
 }
@@ -273,7 +276,7 @@ void readSizes(CArchive& in, model::ModelParams& m, LastingParts& parts)
 }
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 9; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 10; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -349,6 +352,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 7:
 		case 8:
 		case 9:
+		case 10:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -406,7 +410,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 			m.walls = noWalls.walls, m.c_W = noWalls.c_W, m.wall_length_scale = noWalls.wall_length_scale;
 			m.wall_thickness = noWalls.wall_thickness;
 			std::vector<model::LastingState::StoredWall> walls;
-			if (version >= 4) readWalls(in, m, walls);
+			if (version >= 4) readWalls(in, m, walls, version);
 			if (version >= 5)
 			{
 				auto& sw = likelihoodOptions.sweep;

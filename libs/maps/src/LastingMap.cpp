@@ -121,7 +121,7 @@ model::ModelParams LastingMap::reportModel(const model::ModelParams& model)
 
 LastingMap::TStats LastingMap::insert(
 	const std::vector<obs::Shapelet>& contacts, const model::ModelParams& model,
-	const inference::SamplerParams& sampler, uint64_t seed)
+	const inference::SamplerParams& sampler, uint64_t seed, const model::SweptGrid* grid)
 {
 	if (contacts.empty()) return {};
 	if (!(m_samplerModel == model) || !(m_samplerSchedule == m_options.schedule))
@@ -132,12 +132,13 @@ LastingMap::TStats LastingMap::insert(
 	}
 	m_new.clear();
 	for (const auto& s : contacts) m_new.push_back(m_state.addContact(s));
-	TStats stats = solve(model, localSampler(sampler, m_options.schedule), m_options.visit_radius, seed, m_sampler);
+	TStats stats =
+		solve(model, localSampler(sampler, m_options.schedule), m_options.visit_radius, seed, grid, m_sampler);
 	if (model.cornersTighterThanReadings())
 		for (uint32_t k = 0; k < m_options.noisy_revisions; k++)
 		{
 			TStats r;
-			if (!reviseNext(model, sampler, seed ^ (0x9E3779B97F4A7C15ULL * (k + 1)), r)) continue;
+			if (!reviseNext(model, sampler, seed ^ (0x9E3779B97F4A7C15ULL * (k + 1)), grid, r)) continue;
 			stats.revisions++;
 			inference::addMoveCounts(stats.proposed, stats.accepted, stats.moveTypes, r);
 		}
@@ -145,7 +146,8 @@ LastingMap::TStats LastingMap::insert(
 }
 
 bool LastingMap::reviseNext(
-	const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed, TStats& out)
+	const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed,
+	const model::SweptGrid* grid, TStats& out)
 {
 	// A scan of the stored contacts (bounded by contacts_per_leg a leg plus the unexplained
 	// ones): linear in the map, small against the anneal that follows (not measured apart).
@@ -164,13 +166,13 @@ bool LastingMap::reviseNext(
 	m_new = m_state.contactsOf(m_state.contact(pick).leg);
 	for (const model::Id c : m_new) m_reviseSeq = std::max(m_reviseSeq, m_state.contact(c).seq + 1);
 	// Every leg that could share a table with the revised one, every table that could hold it.
-	out = solve(model, sampler, std::max(m_options.visit_radius, model.maxDiagonal() + model.parent_gate), seed, m_reviser);
+	out = solve(model, sampler, std::max(m_options.visit_radius, model.maxDiagonal() + model.parent_gate), seed, grid, m_reviser);
 	return true;
 }
 
 LastingMap::TStats LastingMap::solve(
 	const model::ModelParams& model, const inference::SamplerParams& sampler, double visit, uint64_t seed,
-	std::unique_ptr<inference::BlackboardSampler>& cache)
+	const model::SweptGrid* grid, std::unique_ptr<inference::BlackboardSampler>& cache)
 {
 	TStats stats;
 	// The local problem around the new contacts.
@@ -180,6 +182,7 @@ LastingMap::TStats LastingMap::solve(
 	radii.context = radii.board + std::hypot(model.table_length, model.table_width);
 	if (!m_region) m_region = std::make_unique<model::LastingState::Region>(model);
 	m_state.extract(m_new, radii, model, *m_region);
+	m_region->board.setSweptGrid(grid);
 	const model::Blackboard& board = m_region->board;
 
 	if (!cache) cache = std::make_unique<inference::BlackboardSampler>(model, sampler);

@@ -144,10 +144,11 @@ double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelPara
 
 namespace
 {
-/** Delta_WS of eq. 22 against face `side`, without the texture term. */
+/** Delta_WS of eq. 22 against face `side` (a long face or an end cap: Wall::hit), without
+ *  the texture term. */
 double wallFaceCost(const obs::Shapelet& s, const Wall& w, int side, const ModelParams& p)
 {
-	const Wall::FaceHit h = w.face(s.x, s.y, side);
+	const Wall::FaceHit h = w.hit(s.x, s.y, side);
 	const double a = core::wrapToPi(s.normal - h.normal);
 	double position = (sq(h.across) + sq(h.excess)) / sq(p.sigma_r);
 	if (p.shaft_noise && s.hasShaft())
@@ -161,15 +162,19 @@ double wallFaceCost(const obs::Shapelet& s, const Wall& w, int side, const Model
 }
 }  // namespace
 
-double logShapeletGivenWall(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
-{
-	const double best = std::min(wallFaceCost(s, w, 1, p), wallFaceCost(s, w, -1, p));
-	return core::cachedLog(p.alpha_S) - best - sq((w.texture - s.texture) / p.sigma_tau);  // eq. 22
-}
-
 int bestWallFace(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
 {
-	return wallFaceCost(s, w, 1, p) <= wallFaceCost(s, w, -1, p) ? 1 : -1;
+	int best = Wall::FACES[0];
+	double cost = wallFaceCost(s, w, best, p);
+	for (const int f : Wall::FACES)
+		if (const double c = wallFaceCost(s, w, f, p); c < cost) best = f, cost = c;
+	return best;
+}
+
+double logShapeletGivenWall(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
+{
+	const double best = wallFaceCost(s, w, bestWallFace(s, w, p), p);
+	return core::cachedLog(p.alpha_S) - best - sq((w.texture - s.texture) / p.sigma_tau);  // eq. 22
 }
 
 double logWallPrior(const Wall& w, const ModelParams& p)

@@ -1,4 +1,5 @@
 #include <whiskermap/model/Densities.h>
+#include <whiskermap/model/GridFreeSpace.h>
 #include <whiskermap/model/Posterior.h>
 
 #include <algorithm>
@@ -93,6 +94,17 @@ double wallEvidenceGain(const Blackboard& bb, Id w)
 }
 }  // namespace
 
+// A wall's own factors: its cell (eq. 23), its folded contacts, and with free space on the
+// lasting map's swept grid (eq. 25).
+double wallOwnFactors(const Blackboard& bb, Id w)
+{
+	const ModelParams& p = bb.params();
+	const Wall& wall = bb.wall(w);
+	double sum = logWallPrior(wall, p) + wallEvidenceGain(bb, w);
+	if (p.free_space && bb.sweptGrid()) sum += GridFreeSpace::logWallFactor(wall, *bb.sweptGrid(), p);
+	return sum;
+}
+
 // log p(S | pa(S)) of shapelet s as the board links it: its leg (eq. 7) or its wall (eq. 22),
 // or'ed with the null cause (eqs. 9, 12).
 double logShapeletLinked(const Blackboard& bb, size_t s)
@@ -125,7 +137,7 @@ double logJoint(const Blackboard& bb)
 		boardPairs += o.board, contextPairs += o.context;
 	}
 	for (Id w = 0; w < bb.wallIdBound(); w++)
-		if (bb.hasWall(w)) sum += logWallPrior(bb.wall(w), p) + wallEvidenceGain(bb, w);  // eq. 23
+		if (bb.hasWall(w)) sum += wallOwnFactors(bb, w);  // eqs. 23, 25
 	for (size_t s = 0; s < bb.shapelets().size(); s++) sum += logShapeletLinked(bb, s);
 	return sum + logOverlap(boardPairs / 2 + contextPairs, p);
 }
@@ -195,7 +207,7 @@ double logOddsWall(const Blackboard& bb, Id wall)
 {
 	const ModelParams& p = bb.params();
 	const Wall& w = bb.wall(wall);
-	double sum = logWallPrior(w, p) + wallEvidenceGain(bb, wall);  // eq. 23
+	double sum = wallOwnFactors(bb, wall);  // eqs. 23, 25
 	for (const Id s : bb.shapeletsOfWall(wall)) sum += logShapeletLinked(bb, static_cast<size_t>(s)) - logShapeletNull(p);
 	int legs = 0;
 	const OrientedRect r = w.rect();

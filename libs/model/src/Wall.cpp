@@ -35,6 +35,22 @@ Wall::FaceHit Wall::face(double x, double y, int side) const
 	return h;
 }
 
+Wall::FaceHit Wall::hit(double x, double y, int f) const
+{
+	if (f == 1 || f == -1) return face(x, y, f);
+	const double len = length();
+	const double ux = len > 0 ? (x1 - x0) / len : 1, uy = len > 0 ? (y1 - y0) / len : 0;
+	const double dx = x - x0, dy = y - y0;
+	const double along = ux * dx + uy * dy, offset = -uy * dx + ux * dy;
+	FaceHit h;
+	h.side = f;
+	h.across = f > 0 ? along - len : -along;
+	h.along = offset;
+	h.excess = std::max(0.0, std::abs(offset) - thickness / 2);
+	h.normal = f > 0 ? std::atan2(uy, ux) : std::atan2(-uy, -ux);
+	return h;
+}
+
 Wall::FaceHit Wall::nearestFace(double x, double y) const
 {
 	const double len = length();

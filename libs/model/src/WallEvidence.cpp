@@ -13,7 +13,23 @@ double sq(double v) { return v * v; }
 
 void WallEvidence::add(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
 {
-	const int side = bestWallFace(s, w, p);
+	int side = bestWallFace(s, w, p);
+	const double wt = 1 / sq(p.sigma_tau);
+	const double ux = std::sin(m_phi), uy = -std::cos(m_phi);  // the reference direction (extent)
+	if ((side == 2 || side == -2) && m_face[0].w + m_face[1].w > 0)
+	{
+		// An end cap's contact: its position and normal cost (eq. 22, isotropic as every folded
+		// contact) frozen as folded, its texture live.
+		const Wall::FaceHit h = w.hit(s.x, s.y, side);
+		m_capCost += (sq(h.across) + sq(h.excess)) / sq(p.sigma_r) + sq(core::wrapToPi(s.normal - h.normal) / p.sigma_theta);
+		m_wt += wt, m_st += wt * s.texture, m_stt += wt * s.texture * s.texture;
+		const double a = ux * (s.x - m_ax) + uy * (s.y - m_ay);
+		if (a < ux * (m_lox - m_ax) + uy * (m_loy - m_ay)) m_lox = s.x, m_loy = s.y;
+		if (a > ux * (m_hix - m_ax) + uy * (m_hiy - m_ay)) m_hix = s.x, m_hiy = s.y;
+		m_count++;
+		return;
+	}
+	if (side == 2 || side == -2) side = w.nearestFace(s.x, s.y).side;  // no long face yet: the reference comes from one
 	const double faceNormal = w.face(s.x, s.y, side).normal;
 	if (m_count == 0) m_ax = s.x, m_ay = s.y, m_phi = faceNormal, m_lox = m_hix = s.x, m_loy = m_hiy = s.y;
 	// Face index against the reference normal: 0 when the face's normal is within 90 deg of it.
@@ -23,12 +39,11 @@ void WallEvidence::add(const obs::Shapelet& s, const Wall& w, const ModelParams&
 	f.w += wr, f.sx += wr * qx, f.sy += wr * qy, f.sxx += wr * qx * qx, f.sxy += wr * qx * qy, f.syy += wr * qy * qy;
 	const double e = core::wrapToPi(s.normal - m_phi - k * M_PI), wa = 1 / sq(p.sigma_theta);
 	m_wa += wa, m_sa += wa * e, m_saa += wa * e * e;
-	const double wt = 1 / sq(p.sigma_tau);
 	m_wt += wt, m_st += wt * s.texture, m_stt += wt * s.texture * s.texture;
 	// Extent along the reference direction u = (sin phi, -cos phi).
-	const double ux = std::sin(m_phi), uy = -std::cos(m_phi), a = ux * qx + uy * qy;
-	if (a < ux * (m_lox - m_ax) + uy * (m_loy - m_ay)) m_lox = s.x, m_loy = s.y;
-	if (a > ux * (m_hix - m_ax) + uy * (m_hiy - m_ay)) m_hix = s.x, m_hiy = s.y;
+	const double rx = std::sin(m_phi), ry = -std::cos(m_phi), a = rx * qx + ry * qy;
+	if (a < rx * (m_lox - m_ax) + ry * (m_loy - m_ay)) m_lox = s.x, m_loy = s.y;
+	if (a > rx * (m_hix - m_ax) + ry * (m_hiy - m_ay)) m_hix = s.x, m_hiy = s.y;
 	m_count++;
 }
 
@@ -67,7 +82,7 @@ double WallEvidence::logLikelihood(const Wall& w, const ModelParams& p) const
 	const double c = -(w.face(m_ax, m_ay, side).across + w.thickness / 2);
 	const double tex = m_stt - 2 * w.texture * m_st + m_wt * w.texture * w.texture;
 	// The weights were 1/sigma^2 of the folding model: the costs are eq. 22's Delta sums.
-	return m_count * std::log(p.alpha_S) - cost(d, c, w.thickness) - tex;  // eq. 22, summed
+	return m_count * std::log(p.alpha_S) - cost(d, c, w.thickness) - tex - m_capCost;  // eq. 22, summed
 }
 
 Wall WallEvidence::fit(double thickness) const
@@ -98,7 +113,7 @@ std::array<double, WallEvidence::STATS> WallEvidence::stats() const
 {
 	const Face &a = m_face[0], &b = m_face[1];
 	return {m_ax, m_ay, m_phi, a.w, a.sx, a.sy, a.sxx, a.sxy, a.syy, b.w, b.sx, b.sy, b.sxx, b.sxy, b.syy,
-			m_wa, m_sa, m_saa, m_wt, m_st, m_stt, m_lox, m_loy, m_hix, m_hiy};
+			m_wa, m_sa, m_saa, m_wt, m_st, m_stt, m_lox, m_loy, m_hix, m_hiy, m_capCost};
 }
 
 WallEvidence WallEvidence::fromStats(const std::array<double, STATS>& v, uint32_t count)
@@ -109,6 +124,7 @@ WallEvidence WallEvidence::fromStats(const std::array<double, STATS>& v, uint32_
 	for (Face& f : e.m_face) f.w = v[i++], f.sx = v[i++], f.sy = v[i++], f.sxx = v[i++], f.sxy = v[i++], f.syy = v[i++];
 	e.m_wa = v[i++], e.m_sa = v[i++], e.m_saa = v[i++], e.m_wt = v[i++], e.m_st = v[i++], e.m_stt = v[i++];
 	e.m_lox = v[i++], e.m_loy = v[i++], e.m_hix = v[i++], e.m_hiy = v[i++];
+	e.m_capCost = v[i++];
 	e.m_count = count;
 	return e;
 }

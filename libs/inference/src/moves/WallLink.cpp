@@ -23,7 +23,7 @@ bool nearFace(const model::Blackboard& bb, Id w, size_t s)
 	const obs::Shapelet& sh = bb.shapelets()[s];
 	const model::Wall& wall = bb.wall(w);
 	const int side = model::bestWallFace(sh, wall, p);
-	const model::Wall::FaceHit h = wall.face(sh.x, sh.y, side);
+	const model::Wall::FaceHit h = wall.hit(sh.x, sh.y, side);
 	return std::hypot(h.across, h.excess) <= p.parent_gate &&
 		   std::abs(core::wrapToPi(sh.normal - h.normal)) <= 3 * p.sigma_theta;
 }

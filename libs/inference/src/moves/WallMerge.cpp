@@ -24,7 +24,7 @@ WallEvidence mergeEvidence(const WallEvidence& a, const WallEvidence& b)
 	if (a.empty()) return b;
 	if (b.empty()) return a;
 	// Layout of stats(): ax, ay, phi, face 0 (w, sx, sy, sxx, sxy, syy), face 1 (the same),
-	// wa, sa, saa, wt, st, stt, lox, loy, hix, hiy.
+	// wa, sa, saa, wt, st, stt, lox, loy, hix, hiy, the end caps' frozen cost.
 	auto s = a.stats();
 	const auto t = b.stats();
 	const double dx = t[0] - s[0], dy = t[1] - s[1];  // b's anchor from a's
@@ -46,6 +46,7 @@ WallEvidence mergeEvidence(const WallEvidence& a, const WallEvidence& b)
 	const double wa = t[15], sa = t[16], saa = t[17];
 	s[15] += wa, s[16] += sa + wa * d, s[17] += saa + 2 * d * sa + wa * d * d;
 	s[18] += t[18], s[19] += t[19], s[20] += t[20];
+	s[25] += t[25];
 	// Extent along a's reference direction: the furthest of the four end contacts.
 	const double ux = std::sin(s[2]), uy = -std::cos(s[2]);
 	const auto along = [&](double x, double y) { return ux * (x - s[0]) + uy * (y - s[1]); };

@@ -86,10 +86,11 @@ class LastingMap
 	const TOptions& options() const { return m_options; }
 
 	/** Inserts the contacts of one sweep (world frame), scored with `model`, annealed with
-	 *  `sampler`'s schedule from `seed`. */
+	 *  `sampler`'s schedule from `seed`. With `model.free_space`, walls pay the untouched
+	 *  swept cells of `grid` (eq. 25; null: none), which must already hold this sweep. */
 	TStats insert(
 		const std::vector<obs::Shapelet>& contacts, const model::ModelParams& model,
-		const inference::SamplerParams& sampler, uint64_t seed);
+		const inference::SamplerParams& sampler, uint64_t seed, const model::SweptGrid* grid = nullptr);
 
 	/** The spread of table t's pose (doc/map-plugin.md, "Pose spread"): inference::rigidPoseSpread
 	 *  from its rigid fit, under `model` with shaft noise on (as the reported pose is fitted),
@@ -110,12 +111,13 @@ class LastingMap
 	 *  annealed with `sampler` (built once per model and schedule into `cache`), written back. */
 	TStats solve(
 		const model::ModelParams& model, const inference::SamplerParams& sampler, double visit, uint64_t seed,
-		std::unique_ptr<inference::BlackboardSampler>& cache);
+		const model::SweptGrid* grid, std::unique_ptr<inference::BlackboardSampler>& cache);
 	/** One revision (TOptions::noisy_revisions): the problem around the explicit contacts of
 	 *  the leg holding the oldest explicit contact inserted at or after m_reviseSeq (from the
 	 *  oldest again when none is), its figures into `out`; false when no leg holds a contact. */
 	bool reviseNext(
-		const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed, TStats& out);
+		const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed,
+		const model::SweptGrid* grid, TStats& out);
 	/** The model the reported poses are fitted (and their spreads scored) with: `model` with
 	 *  shaft noise on. */
 	static model::ModelParams reportModel(const model::ModelParams& model);

@@ -5,6 +5,7 @@
 #include <whiskermap/model/ModelParams.h>
 #include <whiskermap/model/SlotVector.h>
 #include <whiskermap/model/SpatialHash.h>
+#include <whiskermap/model/SweptGrid.h>
 #include <whiskermap/model/SweptSpace.h>
 #include <whiskermap/model/Wall.h>
 #include <whiskermap/model/WallEvidence.h>
@@ -109,6 +110,10 @@ class Blackboard
 	const std::vector<obs::Shapelet>& shapelets() const { return *m_shapelets; }
 	/** The problem's swept free space (negative evidence, eq. 21); empty unless given. */
 	const SweptSpace& swept() const { return m_swept; }
+	/** The lasting map's swept grid, whose untouched cells count against walls (eq. 25):
+	 *  null (the default) for none. Not owned; reset() keeps it. */
+	void setSweptGrid(const SweptGrid* g) { m_grid = g; }
+	const SweptGrid* sweptGrid() const { return m_grid; }
 	Id shapeletParent(size_t i) const { return m_shapeletParent[i]; }
 
 	/** Child legs of `table` per corner, not counting `excludeLeg`. */
@@ -170,6 +175,7 @@ class Blackboard
 	SpatialHash m_tableHash, m_legHash, m_contextTableHash, m_contextLegHash;
 	double m_maxLegRadius = 0;
 	SweptSpace m_swept;
+	const SweptGrid* m_grid = nullptr;
 	SlotVector<Wall> m_walls;
 	std::vector<WallEvidence> m_wallEvidence;  ///< per wall id
 	std::vector<std::vector<Id>> m_wallShapelets;  ///< per wall id, ascending

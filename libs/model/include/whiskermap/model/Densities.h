@@ -62,12 +62,14 @@ double shaftVariance(const obs::Shapelet& s, double ux, double uy, const ModelPa
  *  corner's bisector on the face its normal names (doc/model.md). */
 double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelParams& p);
 
-/** log p(S | W) = log alpha_S - Delta_WS (eq. 22): the wall's long face that explains the
- *  contact best; r^2 = across^2 + excess^2 (distance to the face segment) over sigma_r^2 as
- *  eq. 7, the normal against the face's outward normal (mod 360 deg) as eq. 7, texture as
- *  eq. 7. Under shaft noise the across term uses contactVariance (and its log-ratio gain). */
+/** log p(S | W) = log alpha_S - Delta_WS (eq. 22): the wall's face that explains the contact
+ *  best, of its two long faces and two end caps (Wall::hit); r^2 = across^2 + excess^2
+ *  (distance to the face segment) over sigma_r^2 as eq. 7, the normal against the face's
+ *  outward normal (mod 360 deg) as eq. 7, texture as eq. 7. Under shaft noise the across term
+ *  uses contactVariance (and its log-ratio gain). */
 double logShapeletGivenWall(const obs::Shapelet& s, const Wall& w, const ModelParams& p);
-/** The face (+1 or -1) of eq. 22's minimum for contact s. */
+/** The face (+1 or -1 a long face, +2 or -2 an end cap: Wall::hit) of eq. 22's minimum for
+ *  contact s. */
 int bestWallFace(const obs::Shapelet& s, const Wall& w, const ModelParams& p);
 
 /** Cell probability of a wall (eq. 23): (2 delta)^4 c_W exp(-length / lambda_W), a density over

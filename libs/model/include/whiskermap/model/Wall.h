@@ -7,7 +7,7 @@ namespace whiskermap::model
  *  points of its centre line, its thickness and its texture. Its two long faces lie
  *  thickness/2 either side of the centre line; face +1 has the outward normal to the left of
  *  the direction (x0, y0) -> (x1, y1), face -1 to the right. It explains contacts on its long
- *  faces, within its extent (eq. 22); its end caps explain nothing. */
+ *  faces within its extent and on its two end caps (eq. 22). */
 struct Wall
 {
 	double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< centre-line end points, metres (world frame)
@@ -32,6 +32,12 @@ struct Wall
 	};
 	/** The point against face `side` (+1 or -1). */
 	FaceHit face(double x, double y, int side) const;
+	/** The point against any of the four faces: `f` = +1 or -1 a long face (as face()), +2 the
+	 *  end cap at (x1, y1) (outward normal along the direction), -2 the one at (x0, y0). For a
+	 *  cap, `across` is the signed distance from the cap's line (positive outside), `along` the
+	 *  offset from the centre line and `excess` how far that offset exceeds thickness / 2. */
+	FaceHit hit(double x, double y, int f) const;
+	static constexpr int FACES[4] = {1, -1, 2, -2};
 	/** The point against the face on its side of the centre line (the nearer face). */
 	FaceHit nearestFace(double x, double y) const;
 	/** Exact distance from the point to the face segment of `side`: hypot(across, excess). */

@@ -17,7 +17,10 @@ namespace whiskermap::model
  *  pose, sum_i Delta_WS (eq. 22) over the folded contacts is then a quadratic in its
  *  centre-line offset, yaw and texture: eq. 22 exactly while every contact lies within the
  *  extent (the extent covers them) and the wall turned by less than 90 degrees; eq. 12's null
- *  cause is dropped as for legs (LegEvidence). Scored isotropically (no shaft noise). */
+ *  cause is dropped as for legs (LegEvidence). Scored isotropically (no shaft noise).
+ *  A contact on an end cap (once a long face holds one) joins the texture moments and the
+ *  extent; its position and normal cost is frozen at its value when folded (a sum), so it
+ *  does not pull the wall's yaw or offset. */
 class WallEvidence
 {
    public:
@@ -35,7 +38,9 @@ class WallEvidence
 	bool empty() const { return m_count == 0; }
 
 	/** Raw statistics (serialization): STATS numbers and the count. */
-	static constexpr size_t STATS = 2 * 6 + 3 + 3 + 3 + 4;
+	static constexpr size_t STATS = 2 * 6 + 3 + 3 + 3 + 4 + 1;
+	/** STATS of map streams before version 10 (no end caps: the frozen cap cost is 0). */
+	static constexpr size_t STATS_BEFORE_CAPS = STATS - 1;
 	std::array<double, STATS> stats() const;
 	static WallEvidence fromStats(const std::array<double, STATS>& v, uint32_t count);
 	bool operator==(const WallEvidence& o) const { return stats() == o.stats() && m_count == o.m_count; }
@@ -57,6 +62,7 @@ class WallEvidence
 	double m_wa = 0, m_sa = 0, m_saa = 0;  ///< normal error vs the reference face normals
 	double m_wt = 0, m_st = 0, m_stt = 0;  ///< texture
 	double m_lox = 0, m_loy = 0, m_hix = 0, m_hiy = 0;  ///< first and last contact along the reference direction
+	double m_capCost = 0;  ///< sum of eq. 22's position and normal cost of the end caps' contacts, as folded
 	uint32_t m_count = 0;
 };
 }  // namespace whiskermap::model
