@@ -1,6 +1,7 @@
 // whisker-insert-bench: the time of each insertion into a CHierarchicalObjectMap (lasting mode
 // by default), over a whole rawlog, as a distribution: median, p95, max and mean wall time and
-// thread CPU time per sweep, the map's size at the end and the process's peak RSS. The sweeps
+// thread CPU time per sweep, the map's size at the end, the time of a copy of it (the two ways
+// a particle filter's resampling may copy it) and the process's peak RSS. The sweeps
 // are streamed (one in memory at a time). --repeat N maps the log N times and adds, per
 // insertion, the least time over the runs (the uncontended estimate). Figures and commands: doc/benchmarks.md, "Lasting
 // map: insertion time and scaling" (scripts/bench-lasting.sh).
@@ -85,6 +86,33 @@ Times mapOnce(const std::string& config, const std::string& mode, const std::str
 		static_cast<double>(usage.ru_maxrss) / 1024.0);
 	report("wall", t.wall);
 	report("cpu ", t.cpu);
+	{
+		// A copy of the map as the log left it, two ways: MRPT's CMultiMetricMap copy (a
+		// serialization round trip of every map: CMultiMetricMapPDF's own resampling) and the
+		// map's copy constructor (whisker-slam's resampling clones the maps: RbpfSlam::resample).
+		const auto timed = [](const auto& copyOnce)
+		{
+			std::vector<double> v;
+			for (int k = 0; k < 51; k++)
+			{
+				const auto t0 = std::chrono::steady_clock::now();
+				copyOnce();
+				v.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+			}
+			std::sort(v.begin(), v.end());
+			return quantile(v, 0.5);
+		};
+		const double serialized = timed([&] { const mrpt::maps::CMultiMetricMap copy(mm); });
+		size_t shared = 0;
+		const double cloned = timed([&] {
+			const maps::CHierarchicalObjectMap copy(*map);
+			shared = map->sweptGrid().sharedChunks();
+		});
+		std::printf(
+			"map copy, median of 51: %.3f ms as MRPT's CMultiMetricMap copy (serialized), %.3f ms by the copy "
+			"constructor (swept grid chunks shared: %zu of %zu)\n",
+			serialized, cloned, shared, map->sweptGrid().chunkCount());
+	}
 	if (map->lasting())  // the outputs' pose spreads (a chain per object, doc/map-plugin.md)
 	{
 		const auto t0 = std::chrono::steady_clock::now();

@@ -196,3 +196,42 @@ TEST(RbpfSlam, ResamplingLeavesEqualWeightsAndOneLatestPosePerParticle)
 		EXPECT_TRUE(same(path.back(), {q.x, q.y, q.yaw}));
 	}
 }
+
+TEST(RbpfSlam, ResampledCopiesAreClonesThatGoTheirOwnWay)
+{
+	// Copies of one parent are clones (copy constructors): equal maps whose swept grids share
+	// every chunk, not MRPT's serialized copies (which share nothing). Then each goes its own
+	// way: a sweep inserted into one leaves the other as it was.
+	auto p = slam::TSlamParams::load(SLAM_INI);
+	p.particles = 6;
+	const auto sweeps = firstSweeps(400);
+	slam::RbpfSlam s(p, maps::MapConfig::load(p.map_config));
+	size_t k = 0;
+	while (k < sweeps.size() && !(s.steps().size() > 0 && s.steps().back().resampled)) s.step(sweeps[k++]);
+	ASSERT_LT(k, sweeps.size());  // the ESS fell below resample_ess: some parent will be drawn twice
+	s.resample();
+	const auto& pdf = s.particles();
+	const auto mapOf = [&](size_t i) { return pdf.m_particles[i].d->mapTillNow.mapByClass<maps::CHierarchicalObjectMap>(); };
+	const auto samePose = [&](size_t i, size_t j) {
+		const auto &a = pdf.m_particles[i].d->robotPath.back(), &b = pdf.m_particles[j].d->robotPath.back();
+		return a.x == b.x && a.y == b.y && a.yaw == b.yaw;
+	};
+	std::vector<size_t> twins;  // i: particle i is a copy of particle i - 1's parent too
+	for (size_t i = 1; i < pdf.particlesCount(); i++)
+	{
+		if (!samePose(i, i - 1)) continue;
+		twins.push_back(i);
+		const auto a = mapOf(i - 1), b = mapOf(i);
+		ASSERT_TRUE(a && b);
+		EXPECT_NE(a.get(), b.get());
+		EXPECT_GT(b->sweptGrid().chunkCount(), 0u);
+		EXPECT_EQ(b->sweptGrid().sharedChunks(), b->sweptGrid().chunkCount()) << i;
+		EXPECT_EQ(b->asString(), a->asString());
+	}
+	ASSERT_FALSE(twins.empty());
+	const auto a = mapOf(twins[0] - 1), b = mapOf(twins[0]);
+	const std::string before = a->asString();
+	b->insertObservation(*sweeps[k].obs, mrpt::poses::CPose3D(sweeps[k].robotPose));
+	EXPECT_EQ(a->asString(), before);
+	EXPECT_NE(b->asString(), before);
+}

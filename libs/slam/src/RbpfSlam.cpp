@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <type_traits>
 
 namespace whiskermap::slam
 {
@@ -51,9 +52,33 @@ void RbpfSlam::resample()
 	for (size_t i = 0; i < logW.size(); i++) logW[i] = m_pdf.getW(i);
 	std::vector<size_t> parents;
 	mrpt::bayes::CParticleFilterCapable::computeResampling(m_params.resampling, logW, parents);
-	m_pdf.performSubstitution(parents);
+	std::sort(parents.begin(), parents.end());
+	// CParticleFilterDataImpl::performSubstitution's order and reuse (a parent's first copy
+	// takes its data), but each further copy's maps are cloned (their copy constructors:
+	// CHierarchicalObjectMap shares its swept grid's chunks) instead of MRPT's
+	// CMultiMetricMap copy, a serialization round trip of every map (about 30 times slower:
+	// doc/slam.md, "Memory").
+	auto& particles = m_pdf.m_particles;
+	std::remove_reference_t<decltype(particles)> next(parents.size());
+	std::vector<long> taken(particles.size(), -1);  // where a parent's data went in `next`
+	for (size_t i = 0; i < parents.size(); i++)
+	{
+		const size_t k = parents[i];
+		if (taken[k] < 0)
+		{
+			next[i].d = std::move(particles[k].d);
+			taken[k] = static_cast<long>(i);
+			continue;
+		}
+		const auto& from = *next[static_cast<size_t>(taken[k])].d;
+		auto* copy = new mrpt::maps::CRBPFParticleData();
+		copy->robotPath = from.robotPath;
+		for (const auto& m : from.mapTillNow.maps)
+			copy->mapTillNow.maps.push_back(std::dynamic_pointer_cast<mrpt::maps::CMetricMap>(m->duplicateGetSmartPtr()));
+		next[i].d.reset(copy);
+	}
+	particles = std::move(next);
 	for (size_t i = 0; i < m_pdf.particlesCount(); i++) m_pdf.setW(i, 0);
-	std::sort(parents.begin(), parents.end());  // performSubstitution's order
 	m_paths.resample(parents);
 	m_resamplePending = false;
 }

@@ -51,7 +51,9 @@ class RbpfSlam
 	/** One filter step on a sweep. */
 	void step(const obs::RawlogReader::Sweep& sweep);
 	/** Resamples the particles now (step() does it before a sweep when the ESS after the
-	 *  previous one fell below resample_ess): MRPT's resampling method, then equal weights. */
+	 *  previous one fell below resample_ess): MRPT's resampling method, then equal weights.
+	 *  A parent drawn more than once is copied by cloning its maps (copy constructors), not
+	 *  by MRPT's serializing CMultiMetricMap copy. */
 	void resample();
 
 	const std::vector<TStep>& steps() const { return m_steps; }
