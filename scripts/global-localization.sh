@@ -5,6 +5,9 @@
 # The map: whisker-map's, built at the true poses (the lawnmower of datasets/slam/ simulated
 # again with exact odometry, as scripts/bench-grid.sh does). The run: the first STEPS sweeps
 # (default 300) of datasets/slam/paper_arena_action-sf.rawlog (default odometry noise).
+# WORLD=NAME (default paper_arena) runs another shipped SLAM world instead: random_yaw1 (its
+# world config/worlds/eval/random_yaw/seed1.ini, its log datasets/slam/random_yaw1_action-sf;
+# both worlds are 4 m x 4 m, the .ini's uniform prior).
 # For each filter seed of SEEDS (default 1..10) it prints whether the estimate converged
 # (the last estimate, and every one from some step on, within MAX_POS m and MAX_YAW degrees
 # of the truth: defaults 0.10 and 8), the step it converged at (the first from which all
@@ -20,11 +23,17 @@ steps=${STEPS:-300} max_pos=${MAX_POS:-0.10} max_yaw=${MAX_YAW:-8}
 ini=${INI:-$root/config/pf-global-localization.ini}
 sim=$build/apps/whisker-sim/whisker-sim map=$build/apps/whisker-map/whisker-map
 shim=$build/tests/pf/libwhiskermap-test-fixed-seed.so maps=$build/libs/maps/libwhiskermap-maps.so
-data=$root/datasets/slam/paper_arena_action-sf
+world=${WORLD:-paper_arena}
+case $world in
+  paper_arena) world_ini=$root/config/worlds/paper_arena.ini ;;
+  random_yaw1) world_ini=$root/config/worlds/eval/random_yaw/seed1.ini ;;
+  *) echo "global-localization.sh: unknown WORLD '$world' (paper_arena or random_yaw1)" >&2; exit 1 ;;
+esac
+data=$root/datasets/slam/${world}_action-sf
 cd "$work"
 
 if [[ ! -s map.simplemap ]]; then
-  "$sim" -q --world "$root/config/worlds/paper_arena.ini" --trajectory lawnmower --speed 0.4 --rate 8 \
+  "$sim" -q --world "$world_ini" --trajectory lawnmower --speed 0.4 --rate 8 \
     --robot scratchbot --noise default --odometry exact --seed 2011 --format action-sf -o exact.rawlog
   "$map" -q -i exact.rawlog -o objmap --simplemap
   ln -sf objmap/map.simplemap map.simplemap
