@@ -162,6 +162,15 @@ TEST(WallEvidence, EndCapContactsAreFrozenAndStretchTheExtent)
 	EXPECT_NEAR(std::max(fit.x0, fit.x1), 2.004, 1e-3);
 	EXPECT_NEAR((fit.y0 + fit.y1) / 2, 0.002, 0.003);
 	EXPECT_EQ(WallEvidence::fromStats(e.stats(), e.count()), e);
+	// The same contacts with the cap's first: the same sum, the same fitted line and extent.
+	WallEvidence first;
+	first.add(contacts.back(), wall, p);
+	for (size_t i = 0; i + 1 < contacts.size(); i++) first.add(contacts[i], wall, p);
+	EXPECT_NEAR(first.logLikelihood(wall, p), sum, 1e-6);
+	const Wall again = first.fit(0.1);
+	EXPECT_NEAR(std::max(again.x0, again.x1), 2.004, 1e-3);
+	EXPECT_NEAR(std::min(again.x0, again.x1), 0.2, 1e-3);
+	EXPECT_NEAR((again.y0 + again.y1) / 2, (fit.y0 + fit.y1) / 2, 1e-9);
 }
 
 TEST(WallEvidence, FitRecoversATurnedWall)

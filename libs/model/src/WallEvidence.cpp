@@ -13,37 +13,37 @@ double sq(double v) { return v * v; }
 
 void WallEvidence::add(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
 {
-	int side = bestWallFace(s, w, p);
-	const double wt = 1 / sq(p.sigma_tau);
-	const double ux = std::sin(m_phi), uy = -std::cos(m_phi);  // the reference direction (extent)
-	if ((side == 2 || side == -2) && m_face[0].w + m_face[1].w > 0)
+	const int side = bestWallFace(s, w, p);
+	const bool cap = side == 2 || side == -2;
+	// The first contact anchors the moments; the reference normal is its face's (face +1's when
+	// it lies on an end cap).
+	if (m_count == 0)
+		m_ax = s.x, m_ay = s.y, m_phi = w.face(s.x, s.y, cap ? 1 : side).normal, m_lox = m_hix = s.x, m_loy = m_hiy = s.y;
+	const double qx = s.x - m_ax, qy = s.y - m_ay;
+	if (cap)
 	{
 		// An end cap's contact: its position and normal cost (eq. 22, isotropic as every folded
-		// contact) frozen as folded, its texture live.
+		// contact) frozen as folded; its texture and extent below, as a long face's.
 		const Wall::FaceHit h = w.hit(s.x, s.y, side);
 		m_capCost += (sq(h.across) + sq(h.excess)) / sq(p.sigma_r) + sq(core::wrapToPi(s.normal - h.normal) / p.sigma_theta);
-		m_wt += wt, m_st += wt * s.texture, m_stt += wt * s.texture * s.texture;
-		const double a = ux * (s.x - m_ax) + uy * (s.y - m_ay);
-		if (a < ux * (m_lox - m_ax) + uy * (m_loy - m_ay)) m_lox = s.x, m_loy = s.y;
-		if (a > ux * (m_hix - m_ax) + uy * (m_hiy - m_ay)) m_hix = s.x, m_hiy = s.y;
-		m_count++;
-		return;
 	}
-	if (side == 2 || side == -2) side = w.nearestFace(s.x, s.y).side;  // no long face yet: the reference comes from one
-	const double faceNormal = w.face(s.x, s.y, side).normal;
-	if (m_count == 0) m_ax = s.x, m_ay = s.y, m_phi = faceNormal, m_lox = m_hix = s.x, m_loy = m_hiy = s.y;
-	// Face index against the reference normal: 0 when the face's normal is within 90 deg of it.
-	const int k = std::cos(faceNormal - m_phi) >= 0 ? 0 : 1;
-	const double wr = 1 / sq(p.sigma_r), qx = s.x - m_ax, qy = s.y - m_ay;
-	Face& f = m_face[static_cast<size_t>(k)];
-	f.w += wr, f.sx += wr * qx, f.sy += wr * qy, f.sxx += wr * qx * qx, f.sxy += wr * qx * qy, f.syy += wr * qy * qy;
-	const double e = core::wrapToPi(s.normal - m_phi - k * M_PI), wa = 1 / sq(p.sigma_theta);
-	m_wa += wa, m_sa += wa * e, m_saa += wa * e * e;
+	else
+	{
+		// Face index against the reference normal: 0 when the face's normal is within 90 deg of it.
+		const double faceNormal = w.face(s.x, s.y, side).normal;
+		const int k = std::cos(faceNormal - m_phi) >= 0 ? 0 : 1;
+		const double wr = 1 / sq(p.sigma_r);
+		Face& f = m_face[static_cast<size_t>(k)];
+		f.w += wr, f.sx += wr * qx, f.sy += wr * qy, f.sxx += wr * qx * qx, f.sxy += wr * qx * qy, f.syy += wr * qy * qy;
+		const double e = core::wrapToPi(s.normal - m_phi - k * M_PI), wa = 1 / sq(p.sigma_theta);
+		m_wa += wa, m_sa += wa * e, m_saa += wa * e * e;
+	}
+	const double wt = 1 / sq(p.sigma_tau);
 	m_wt += wt, m_st += wt * s.texture, m_stt += wt * s.texture * s.texture;
 	// Extent along the reference direction u = (sin phi, -cos phi).
-	const double rx = std::sin(m_phi), ry = -std::cos(m_phi), a = rx * qx + ry * qy;
-	if (a < rx * (m_lox - m_ax) + ry * (m_loy - m_ay)) m_lox = s.x, m_loy = s.y;
-	if (a > rx * (m_hix - m_ax) + ry * (m_hiy - m_ay)) m_hix = s.x, m_hiy = s.y;
+	const double ux = std::sin(m_phi), uy = -std::cos(m_phi), a = ux * qx + uy * qy;
+	if (a < ux * (m_lox - m_ax) + uy * (m_loy - m_ay)) m_lox = s.x, m_loy = s.y;
+	if (a > ux * (m_hix - m_ax) + uy * (m_hiy - m_ay)) m_hix = s.x, m_hiy = s.y;
 	m_count++;
 }
 

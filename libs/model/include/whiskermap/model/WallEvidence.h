@@ -18,9 +18,9 @@ namespace whiskermap::model
  *  centre-line offset, yaw and texture: eq. 22 exactly while every contact lies within the
  *  extent (the extent covers them) and the wall turned by less than 90 degrees; eq. 12's null
  *  cause is dropped as for legs (LegEvidence). Scored isotropically (no shaft noise).
- *  A contact on an end cap (once a long face holds one) joins the texture moments and the
- *  extent; its position and normal cost is frozen at its value when folded (a sum), so it
- *  does not pull the wall's yaw or offset. */
+ *  A contact on an end cap joins the texture moments and the extent; its position and
+ *  normal cost is frozen at its value when folded (a sum), so it does not pull the wall's
+ *  yaw or offset (a first contact on a cap takes face +1's normal as the reference). */
 class WallEvidence
 {
    public:
