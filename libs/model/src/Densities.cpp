@@ -3,6 +3,7 @@
 #include <whiskermap/model/Densities.h>
 
 #include <cmath>
+#include <utility>
 #include <limits>
 
 namespace whiskermap::model
@@ -160,20 +161,23 @@ double wallFaceCost(const obs::Shapelet& s, const Wall& w, int side, const Model
 	}
 	return position + sq(a / p.sigma_theta);
 }
-}  // namespace
 
-int bestWallFace(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
+/** The face of eq. 22's minimum for contact s (the first of Wall::FACES on a tie) and its cost. */
+std::pair<int, double> bestWallFaceCost(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
 {
-	int best = Wall::FACES[0];
-	double cost = wallFaceCost(s, w, best, p);
+	std::pair<int, double> best{Wall::FACES[0], wallFaceCost(s, w, Wall::FACES[0], p)};
 	for (const int f : Wall::FACES)
-		if (const double c = wallFaceCost(s, w, f, p); c < cost) best = f, cost = c;
+		if (f != best.first)
+			if (const double c = wallFaceCost(s, w, f, p); c < best.second) best = {f, c};
 	return best;
 }
+}  // namespace
+
+int bestWallFace(const obs::Shapelet& s, const Wall& w, const ModelParams& p) { return bestWallFaceCost(s, w, p).first; }
 
 double logShapeletGivenWall(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
 {
-	const double best = wallFaceCost(s, w, bestWallFace(s, w, p), p);
+	const double best = bestWallFaceCost(s, w, p).second;
 	return core::cachedLog(p.alpha_S) - best - sq((w.texture - s.texture) / p.sigma_tau);  // eq. 22
 }
 

@@ -92,7 +92,6 @@ double wallEvidenceGain(const Blackboard& bb, Id w)
 	const WallEvidence& e = bb.wallEvidence(w);
 	return e.empty() ? 0 : e.logLikelihood(bb.wall(w), bb.params()) - e.count() * logShapeletNull(bb.params());
 }
-}  // namespace
 
 // A wall's own factors: its cell (eq. 23), its folded contacts, and with free space on the
 // lasting map's swept grid (eq. 25).
@@ -104,6 +103,7 @@ double wallOwnFactors(const Blackboard& bb, Id w)
 	if (p.free_space && bb.sweptGrid()) sum += GridFreeSpace::logWallFactor(wall, *bb.sweptGrid(), p);
 	return sum;
 }
+}  // namespace
 
 // log p(S | pa(S)) of shapelet s as the board links it: its leg (eq. 7) or its wall (eq. 22),
 // or'ed with the null cause (eqs. 9, 12).
