@@ -14,6 +14,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <random>
 
 using namespace whiskermap;
@@ -176,7 +178,9 @@ TEST(WallMap, VersionNineStreamsLoadTheWallsWithoutEndCapCosts)
 	std::vector<uint8_t> bytes(begin, begin + buf.getTotalBytesCount());
 	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
 	ASSERT_EQ(bytes[1 + name.size()], 10);
+	const std::vector<uint8_t> current = bytes;
 	bytes[1 + name.size()] = 9;
+	bool first = true;
 	for (const auto& w : walls)
 	{
 		// Each wall's record: x0, y0, x1, y1, thickness, texture, existence, the evidence's
@@ -186,6 +190,20 @@ TEST(WallMap, VersionNineStreamsLoadTheWallsWithoutEndCapCosts)
 		const auto at = std::search(bytes.begin(), bytes.end(), h, h + sizeof head);
 		ASSERT_NE(at, bytes.end());
 		const auto cap = at + static_cast<long>(sizeof head + 8 * model::WallEvidence::STATS_BEFORE_CAPS);
+		if (first)
+		{
+			// In the version 10 stream, a cap cost that is not a number >= 0 is refused.
+			const auto offset = cap - bytes.begin();
+			for (const double corrupt : {std::nan(""), -1.0, std::numeric_limits<double>::infinity()})
+			{
+				std::vector<uint8_t> bad = current;
+				std::memcpy(bad.data() + offset, &corrupt, sizeof corrupt);
+				mrpt::io::CMemoryStream in;
+				in.assignMemoryNotOwn(bad.data(), bad.size());
+				EXPECT_ANY_THROW(mrpt::serialization::archiveFrom(in).ReadObject()) << corrupt;
+			}
+			first = false;
+		}
 		bytes.erase(cap, cap + 8);
 	}
 	mrpt::io::CMemoryStream old;
