@@ -36,9 +36,10 @@ TEST(ObjectClasses, MatchWithinTheClassOnly)
 {
 	// The chair 10 cm off and turned 85 deg (5 deg modulo 90: it is square), the desk 30 cm off
 	// (inside its 0.336 m gate), the table labelled a chair.
-	const std::vector<world::Table> est{
+	std::vector<world::Table> est{
 		object("chair", 0.1, 0, 85, 0.40, 0.44, 0.03), object("desk", 3.3, 0, 0, 1.4, 0.7, 0.06),
 		object("chair", 6, 0.1, 0, 1.0, 0.6, 0.05)};
+	est[1].texture = 0.6;  // the truth's 0.7
 	const auto e = MapEvaluation::compute(TRUTH, est, {}, true);
 	EXPECT_EQ(e.matched, 2u);
 	EXPECT_EQ(e.truthMatch, (std::vector<int>{0, 1, -1}));
@@ -51,6 +52,7 @@ TEST(ObjectClasses, MatchWithinTheClassOnly)
 	EXPECT_NEAR(e.classes->length_err_m, (0.02 + 0) / 2, 1e-12);
 	EXPECT_NEAR(e.classes->width_err_m, (0.02 + 0) / 2, 1e-12);
 	EXPECT_NEAR(e.classes->leg_width_err_m, (0 + 0.01) / 2, 1e-12);
+	EXPECT_NEAR(e.classes->texture_err, (0 + 0.1) / 2, 1e-12);
 	// A chair 0.2 m off is outside its 0.127 m gate (a table's 0.25 m would take it).
 	EXPECT_EQ(MapEvaluation::compute({TRUTH[0]}, {object("chair", 0.2, 0, 0, 0.42, 0.42, 0.03)}, {}).matched, 0u);
 }

@@ -9,6 +9,7 @@
 #include <whiskermap/cli/MapOutputs.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/eval/EvalReport.h>
+#include <whiskermap/eval/ObjectsOnWalls.h>
 #include <whiskermap/maps/MapCsv.h>
 #include <whiskermap/render/OcTreeExport.h>
 
@@ -237,6 +238,7 @@ std::string MapOutputs::finish(double wallSeconds)
 	{
 		eval::EvalReport r;
 		r.map = eval::MapEvaluation::compute(m_s.world->tables, mapped, r.options, withClass);
+		r.objectsOnWalls = eval::ObjectsOnWalls::of(*m_s.world, mapped).size();
 		if (m_eval) r.perPose = m_eval->result();
 		r.identifiability = m_ident->result();
 		metricsJson = r.toJson();

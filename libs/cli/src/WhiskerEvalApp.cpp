@@ -4,6 +4,7 @@
 #include <whiskermap/cli/runApp.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/eval/EvalReport.h>
+#include <whiskermap/eval/ObjectsOnWalls.h>
 #include <whiskermap/eval/TableCsv.h>
 #include <whiskermap/eval/TouchedWalls.h>
 #include <whiskermap/obs/RawlogReader.h>
@@ -80,6 +81,7 @@ int run(const Options& o)
 	const auto rows = eval::TableCsv::readMap(o.map, &hasClass);
 	const auto estimated = eval::TableCsv::tables(rows);
 	report.map = eval::MapEvaluation::compute(w.tables, estimated, o.eval, hasClass);
+	report.objectsOnWalls = eval::ObjectsOnWalls::of(w, estimated).size();
 	if (!rows.empty() && rows.front().spread) report.spread = eval::SpreadCoverage::of(w.tables, rows, report.map->truthMatch);
 	std::vector<world::Wall> estimatedWalls;
 	if (!o.walls.empty())

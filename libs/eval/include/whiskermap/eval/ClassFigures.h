@@ -14,5 +14,6 @@ struct ClassFigures
 	double length_err_m = NAN;  ///< mean |estimated - true| leg-centre spacing along x
 	double width_err_m = NAN;  ///< ... along y
 	double leg_width_err_m = NAN;  ///< ... of the leg side
+	double texture_err = NAN;  ///< ... of the leg texture
 };
 }  // namespace whiskermap::eval

@@ -19,6 +19,7 @@ struct EvalReport
 {
 	EvalOptions options;
 	std::optional<MapEvaluation> map;  ///< the consolidated map, when one was given
+	std::optional<size_t> objectsOnWalls;  ///< the map's objects on a true wall (ObjectsOnWalls)
 	std::optional<Identifiability> identifiability;  ///< when a rawlog was given (with a map)
 	std::optional<PerPoseEvaluation> perPose;  ///< when per-pose tables were given
 	std::optional<TrajectoryEvaluation> trajectory;  ///< when an estimated path was given

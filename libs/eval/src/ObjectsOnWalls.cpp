@@ -1,0 +1,26 @@
+#include <whiskermap/eval/ObjectsOnWalls.h>
+
+namespace whiskermap::eval
+{
+std::vector<size_t> ObjectsOnWalls::of(const world::World& w, const std::vector<world::Table>& estimated)
+{
+	// The arena's walls as slabs just outside it, so thick (1000 km) that they hold everything
+	// outside it (World::obstacles), then the interior walls' slabs: the obstacles of no table.
+	constexpr double OUTSIDE = 1e6;
+	std::vector<world::Obstacle> walls;
+	for (const auto& o : w.obstacles(OUTSIDE))
+		if (o.table < 0) walls.push_back(o);
+	std::vector<size_t> on;
+	for (size_t i = 0; i < estimated.size(); i++)
+	{
+		bool hit = false;
+		for (int k = 0; k < 4 && !hit; k++)
+		{
+			const auto leg = estimated[i].leg(k, static_cast<int>(i));
+			for (const auto& s : walls) hit = hit || leg.intersects(s);
+		}
+		if (hit) on.push_back(i);
+	}
+	return on;
+}
+}  // namespace whiskermap::eval
