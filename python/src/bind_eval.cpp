@@ -2,6 +2,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 #include <whiskermap/eval/EvalReport.h>
+#include <whiskermap/eval/ObjectsOnWalls.h>
 #include <whiskermap/eval/TableCsv.h>
 
 #include "Bindings.h"
@@ -30,7 +31,9 @@ EvalReport evaluate(
 	options.validate();
 	EvalReport report;
 	report.options = options;
-	report.map = MapEvaluation::compute(w.tables, fromArray<world::Table>(tables, "tables"), options);
+	const auto estimated = fromArray<world::Table>(tables, "tables");
+	report.map = MapEvaluation::compute(w.tables, estimated, options);
+	report.objectsOnWalls = ObjectsOnWalls::of(w, estimated).size();
 	std::vector<mrpt::poses::CPose2D> robotPoses;
 	if (rawlog)
 	{
@@ -105,6 +108,7 @@ void bindEval(py::module_& m)
 		.def_readonly("map", &EvalReport::map)
 		.def_readonly("identifiability", &EvalReport::identifiability)
 		.def_readonly("per_pose", &EvalReport::perPose)
+		.def_readonly("objects_on_walls", &EvalReport::objectsOnWalls, "the map's objects standing on a true wall")
 		.def("to_json", &EvalReport::toJson, "whisker-eval --json's text")
 		.def("to_text", &EvalReport::toText, "whisker-eval's table")
 		.def("to_dict", [](const EvalReport& r) { return py::module_::import("json").attr("loads")(r.toJson()); },

@@ -85,6 +85,7 @@ def test_evaluation_is_whisker_eval(app, arena, src, dataset, mapped):
     assert figures == json.loads(r.stdout)
     assert figures["f1"] == pytest.approx(report.map.figures.f1, abs=1e-6)
     assert report.per_pose.poses == 400 and report.per_pose.local is not None
+    assert report.objects_on_walls == 0
     assert report.identifiability.recall(report.map) == pytest.approx(1.0)
     r = app("eval", "-w", world_ini, "-m", mapped / "map_tables.csv")
     assert wm.evaluate(arena, wm.read_map_csv(str(mapped / "map_tables.csv"))).to_text() == r.stdout
