@@ -10,7 +10,7 @@ build=${1:-$root/build}
 out=${2:-$root/config/worlds/eval}
 gen="$build/apps/whisker-worldgen/whisker-worldgen"
 [[ -x "$gen" ]] || { echo "make-eval-worlds: $gen not found: build first" >&2; exit 1; }
-for category in random_yaw clutter side_by_side large sparse walls mixed_classes near_walls sized_classes; do
+for category in random_yaw clutter side_by_side large sparse walls mixed_classes near_walls sized_classes varied_legs; do
   mkdir -p "$out/$category"
   for seed in 1 2 3 4 5; do
     "$gen" -q --category "$category" --seed "$seed" -o "$out/$category/seed$seed"

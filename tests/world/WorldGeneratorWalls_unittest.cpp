@@ -31,7 +31,7 @@ double wallGap(const world::World& w, const world::Table& t)
 
 /** The objects per class; each object's length and width within `jitter` of its class's
  *  (exactly its class's when 0). */
-std::map<std::string, int> classes(const world::World& w, double jitter = 0)
+std::map<std::string, int> classes(const world::World& w, double jitter = 0, double legJitter = 0, double textureJitter = 0)
 {
 	std::map<std::string, int> n;
 	for (const auto& t : w.tables)
@@ -45,7 +45,8 @@ std::map<std::string, int> classes(const world::World& w, double jitter = 0)
 		{
 			EXPECT_EQ(t.length, length) << c;
 		}
-		EXPECT_EQ(t.leg_width, c == "chair" ? 0.03 : 0.05) << c;
+		EXPECT_NEAR(t.leg_width, c == "chair" ? 0.03 : 0.05, legJitter + 1e-9) << c;
+		EXPECT_NEAR(t.texture, c == "desk" ? 0.6 : c == "chair" ? 0.5 : 0.7, textureJitter + 1e-9) << c;
 	}
 	return n;
 }
@@ -70,6 +71,14 @@ TEST(WorldGeneratorWalls, ShippedWorldsObeyTheirCategory)
 			return t.length == 1.0 || t.length == 1.4 || t.length == 0.42;
 		});
 		EXPECT_LE(nominal, 1);  // a 1 mm grid in +-3 cm: a nominal length is a 1 in 61 chance
+		for (const auto& t : sized.tables) EXPECT_EQ(t.leg_width, t.object_class.str() == "chair" ? 0.03 : 0.05);
+		// varied_legs: the same, each object with its own leg width (+-1 cm) and texture (+-0.1).
+		const auto varied = shipped("varied_legs", seed);
+		EXPECT_EQ(classes(varied, 0.03, 0.01, 0.1), (std::map<std::string, int>{{"chair", 4}, {"desk", 2}, {"table", 2}}));
+		const auto nominalLegs = std::count_if(varied.tables.begin(), varied.tables.end(), [](const world::Table& t) {
+			return t.leg_width == 0.05 || t.leg_width == 0.03;
+		});
+		EXPECT_LE(nominalLegs, 1);  // a 1 mm grid in +-1 cm: a nominal leg width is a 1 in 21 chance
 		EXPECT_EQ(near.walls.size(), 2u);
 		EXPECT_EQ(classes(near), (std::map<std::string, int>{{"chair", 3}, {"desk", 2}, {"table", 2}}));
 		for (const auto& t : near.tables)

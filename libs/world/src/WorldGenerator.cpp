@@ -26,6 +26,8 @@ struct Spec
 	int walls;  ///< random interior walls
 	double wallMin, wallMax;  ///< every object's footprint gap to the nearest wall, metres
 	double sizeJitter = 0;  ///< each object's length and width drawn within +- this of its class's, metres
+	double legJitter = 0;  ///< each object's leg width drawn within +- this of its class's, metres
+	double textureJitter = 0;  ///< each object's texture drawn within +- this of its class's
 };
 constexpr double WALL_MARGIN = 0.15;  ///< footprint to wall, metres
 const Spec SPECS[] = {
@@ -40,6 +42,8 @@ const Spec SPECS[] = {
 	{"near_walls", 5, 2, 0, 0.30, INFINITY, 12, 2, 3, 2, 0.05, 0.25},
 	// Issue 11: objects of their own sizes about their classes' (the catalogue's size_sigma, 2 cm)
 	{"sized_classes", 5, 2, 0, 0.30, INFINITY, 12, 2, 4, 0, WALL_MARGIN, INFINITY, 0.03},
+	// ... and with legs of their own: leg width within +-1 cm, texture within +-0.1 of the class's
+	{"varied_legs", 5, 2, 0, 0.30, INFINITY, 12, 2, 4, 0, WALL_MARGIN, INFINITY, 0.03, 0.01, 0.1},
 };
 constexpr double WALL_THICKNESS = 0.1, WALL_GAP = 0.8;  ///< interior walls; smallest gap between two, metres
 constexpr double FACING_MIN = 0.105, FACING_MAX = 0.195;  ///< facing leg centres of a pair, metres
@@ -155,6 +159,9 @@ std::optional<World> layout(const Spec& spec, mrpt::random::CRandomGenerator& rn
 				{
 					t.length = mm(t.length + rng.drawUniform(-spec.sizeJitter, spec.sizeJitter));
 					t.width = mm(t.width + rng.drawUniform(-spec.sizeJitter, spec.sizeJitter));
+					if (spec.legJitter == 0) continue;  // sized_classes draws exactly as before
+					t.leg_width = mm(t.leg_width + rng.drawUniform(-spec.legJitter, spec.legJitter));
+					t.texture = mm(t.texture + rng.drawUniform(-spec.textureJitter, spec.textureJitter));
 				}
 			if ((placed = fits(w, unit, spec))) w.tables.insert(w.tables.end(), unit.begin(), unit.end());
 		}

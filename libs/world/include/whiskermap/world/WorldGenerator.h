@@ -20,8 +20,10 @@ namespace whiskermap::world
  *  touches one leg at a time, so that no `window` consecutive contacts hold two legs of one
  *  table, checked with the simulator's truth at every noise level given); issue 11's walls
  *  (random interior walls), mixed_classes (tables, desks and chairs at random yaw),
- *  near_walls (both, every object 5-25 cm from a wall) and sized_classes (mixed_classes with
- *  each object's length and width within +-3 cm of its class's), on grid paths. */
+ *  near_walls (both, every object 5-25 cm from a wall), sized_classes (mixed_classes with
+ *  each object's length and width within +-3 cm of its class's) and varied_legs (sized_classes
+ *  with each object's leg width within +-1 cm and texture within +-0.1 of its class's), on
+ *  grid paths. */
 class WorldGenerator
 {
    public:
