@@ -14,6 +14,8 @@
 #include <whiskermap/world/World.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -337,6 +339,45 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheObjectClasses)
 	for (size_t i = half; i < half + 100 && i < rawlog.sweeps.size(); i++)
 		for (auto* m : {&a, b.get()}) m->insertObservation(*rawlog.sweeps[i].obs, mrpt::poses::CPose3D(rawlog.sweeps[i].robotPose));
 	EXPECT_TRUE(contentOf(*b) == contentOf(a));
+}
+
+// Version 11 stores each class's leg width and texture spreads (eq. 26); a version 10 stream
+// (the same bytes without them) loads with spreads 0; a spread outside [0, 1] is refused.
+TEST(CHierarchicalObjectMap, SerializationKeepsTheLegSpreads)
+{
+	CHierarchicalObjectMap a;
+	a.modelParams.classes = model::ObjectCatalogue::load(SRC + "/config/objects.ini");
+	for (auto& c : a.modelParams.classes) c.leg_width_sigma = 0.01, c.texture_sigma = 0.1;
+	a.modelParams.classes[2].leg_width_sigma = 0.005;
+	const auto b = reloaded(a);
+	ASSERT_TRUE(b);
+	EXPECT_EQ(b->modelParams, a.modelParams);
+	mrpt::io::CMemoryStream buf;
+	mrpt::serialization::archiveFrom(buf) << a;
+	const auto* begin = static_cast<const uint8_t*>(buf.getRawBufferData());
+	const std::vector<uint8_t> bytes(begin, begin + buf.getTotalBytesCount());
+	const size_t version = 1 + std::string("whiskermap::maps::CHierarchicalObjectMap").size();
+	ASSERT_EQ(bytes[version], 11);
+	const auto load = [](std::vector<uint8_t> v) {
+		mrpt::io::CMemoryStream in;
+		in.assignMemoryNotOwn(v.data(), v.size());
+		return std::dynamic_pointer_cast<CHierarchicalObjectMap>(mrpt::serialization::archiveFrom(in).ReadObject());
+	};
+	// The tail before MRPT's end flag: two doubles per class, class 2's leg width spread first.
+	const long tail = 16 * static_cast<long>(a.modelParams.classes.size());
+	std::vector<uint8_t> old = bytes;
+	old[version] = 10;
+	old.erase(old.end() - 1 - tail, old.end() - 1);
+	const auto c = load(old);
+	ASSERT_TRUE(c);
+	EXPECT_FALSE(c->modelParams.legsVary());
+	EXPECT_EQ(c->modelParams.classes.size(), a.modelParams.classes.size());
+	for (const double corrupt : {std::nan(""), -0.01, 2.0})
+	{
+		std::vector<uint8_t> bad = bytes;
+		std::memcpy(bad.data() + bad.size() - 1 - tail + 2 * 16, &corrupt, sizeof corrupt);
+		EXPECT_ANY_THROW(load(bad)) << corrupt;
+	}
 }
 
 // The per-pose mode's consolidation survives the round trip too (objects and records).

@@ -112,8 +112,9 @@ TEST(SweptGridMap, VersionFourStreamsLoadWithoutTheGrid)
 	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
 	ASSERT_EQ(bytes[0], static_cast<uint8_t>(name.size() | 0x80));
 	ASSERT_EQ(std::string(bytes.begin() + 1, bytes.begin() + 1 + static_cast<long>(name.size())), name);
-	ASSERT_EQ(bytes[1 + name.size()], 10);
+	ASSERT_EQ(bytes[1 + name.size()], 11);
 	ASSERT_TRUE(a.lastingMap().state().walls().empty());  // version 10 changes only the walls' records
+	ASSERT_TRUE(a.modelParams.classes.empty());  // version 11 adds 16 bytes per class: none here
 	bytes[1 + name.size()] = 4;
 	// version 5's tail: swept_cell, free_space, cell_prior, cell_prior_sweeps, p_unexplored,
 	// the grid's cell edge and count, 12 bytes a cell; version 6's sigma_corner,

@@ -68,6 +68,20 @@ TEST_F(ObjectCatalogueFile, OneClassLoads)
 	EXPECT_EQ(c[0].prior, 1);
 }
 
+TEST_F(ObjectCatalogueFile, LegSpreadsAreOptionalAndBounded)
+{
+	// eq. 26's spreads: 0 (the class's legs, fixed) unless given, in [0, 1].
+	const auto plain = ObjectCatalogue::load(write(CHAIR + "1\n"));
+	EXPECT_EQ(plain[0].leg_width_sigma, 0.0);
+	EXPECT_EQ(plain[0].texture_sigma, 0.0);
+	const auto spread = ObjectCatalogue::load(write(CHAIR + "1\nleg_width_sigma=0.005\ntexture_sigma=0.1\n"));
+	EXPECT_EQ(spread[0].leg_width_sigma, 0.005);
+	EXPECT_EQ(spread[0].texture_sigma, 0.1);
+	EXPECT_NE(error(CHAIR + "1\nleg_width_sigma=-0.01\n").find("[chair] leg_width_sigma"), std::string::npos);
+	EXPECT_NE(error(CHAIR + "1\ntexture_sigma=nan\n").find("[chair] texture_sigma"), std::string::npos);
+	EXPECT_NE(error(CHAIR + "1\ntexture_sigma=2\n").find("[chair] texture_sigma"), std::string::npos);
+}
+
 TEST_F(ObjectCatalogueFile, UnknownKeyNamesFileLineAndKey)
 {
 	const std::string e = error(CHAIR + "1\ncolour=3\n");

@@ -274,9 +274,26 @@ void readSizes(CArchive& in, model::ModelParams& m, LastingParts& parts)
 				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (table size offset not finite or above 100 m)");
 	}
 }
+
+/** Version 11: each class's spreads of leg width and texture (eq. 26). */
+void writeLegSpreads(CArchive& out, const model::ModelParams& m)
+{
+	for (const auto& c : m.classes) out << c.leg_width_sigma << c.texture_sigma;
+}
+
+void readLegSpreads(CArchive& in, model::ModelParams& m)
+{
+	for (auto& c : m.classes)
+	{
+		in >> c.leg_width_sigma >> c.texture_sigma;
+		for (const double v : {c.leg_width_sigma, c.texture_sigma})
+			if (!(v >= 0 && v <= 1))
+				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt object class (leg width or texture spread not a number in [0, 1])");
+	}
+}
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 10; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 11; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -336,6 +353,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	writeSizes(out, m, m_lasting.state());
 	// Version 9: the sensor noise of the last lasting insertion (the pose spreads' model).
 	out << m_lastNoise.sigma_r << m_lastNoise.sigma_phi << m_lastNoise.sigma_tau;
+	// Version 11: the classes' leg width and texture spreads.
+	writeLegSpreads(out, m);
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -353,6 +372,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 8:
 		case 9:
 		case 10:
+		case 11:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -436,6 +456,9 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 					if (!(v >= 0 && v <= 1e3))
 						THROW_EXCEPTION("CHierarchicalObjectMap: corrupt sensor noise (not a number in [0, 1000])");
 			}
+			if (version >= 11) readLegSpreads(in, m);
+			else  // older streams: every class's legs nominal
+				for (auto& cl : m.classes) cl.leg_width_sigma = cl.texture_sigma = 0;
 			if (version >= 1)
 			{
 				m_lasting.state().restore(

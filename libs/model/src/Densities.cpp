@@ -37,7 +37,19 @@ double logTablePrior(const Table& t, const ModelParams& p)
 double logSizePrior(const Table& t, const ModelParams& p)
 {
 	if (p.classes.empty()) return 0;
-	return -(sq(t.d_length) + sq(t.d_width)) / (2 * sq(p.sizeSigmaOf(t.cls)));
+	return -(sq(t.d_length) + sq(t.d_width)) / (2 * sq(p.sizeSigmaOf(t.cls))) + logLegPrior(t, p);
+}
+
+// eq. 26: -(w - w_k)^2 / (2 leg_width_sigma^2) - (tau - tau_k)^2 / (2 texture_sigma^2), each
+// term only for a spread > 0 (a spread of 0 keeps the class's value: the term is 0)
+double logLegPrior(const Table& t, const ModelParams& p)
+{
+	if (p.classes.empty()) return 0;
+	const ObjectClass& c = p.classes[t.cls];
+	double v = 0;
+	if (c.leg_width_sigma > 0) v -= sq(t.leg_width - c.leg_width) / (2 * sq(c.leg_width_sigma));
+	if (c.texture_sigma > 0) v -= sq(t.texture - c.texture) / (2 * sq(c.texture_sigma));
+	return v;
 }
 
 void tableCorner(const Table& t, int i, const ModelParams& p, double& x, double& y)

@@ -52,6 +52,13 @@ ModelParams ModelParams::fromIni(core::IniSection& sec)
 	return p;
 }
 
+bool ModelParams::legsVary() const
+{
+	for (const auto& c : classes)
+		if (c.leg_width_sigma > 0 || c.texture_sigma > 0) return true;
+	return false;
+}
+
 double ModelParams::maxDiagonal() const
 {
 	double d = 0;

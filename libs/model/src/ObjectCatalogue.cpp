@@ -37,6 +37,8 @@ std::vector<ObjectClass> ObjectCatalogue::load(const std::string& path)
 		c.texture = sec.number("texture", 0, 1);
 		c.size_sigma = sec.number("size_sigma", 1e-6, 10);
 		c.prior = sec.number("prior", 1e-12, 1);
+		c.leg_width_sigma = sec.number("leg_width_sigma", 0, 0, 1);
+		c.texture_sigma = sec.number("texture_sigma", 0, 0, 1);
 		sec.finish();
 		if (c.leg_width >= std::min(c.length, c.width)) sec.fail("leg_width", "must be smaller than length and width");
 		sum += c.prior;

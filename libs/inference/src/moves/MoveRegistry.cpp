@@ -9,6 +9,7 @@
 #include <whiskermap/inference/moves/SplitMerge.h>
 #include <whiskermap/inference/moves/TableBirthDeath.h>
 #include <whiskermap/inference/moves/TableClassSwitch.h>
+#include <whiskermap/inference/moves/TableLegFit.h>
 #include <whiskermap/inference/moves/TableRefit.h>
 #include <whiskermap/inference/moves/WallBirthDeath.h>
 #include <whiskermap/inference/moves/WallLink.h>
@@ -228,6 +229,12 @@ MoveRegistry::MoveRegistry(const model::ModelParams& p)
 		const auto resize = std::make_shared<TableRefit>(true);
 		m_entries.push_back({"table resize", Target::Table, Slot::Refit, 1,
 							 [=](MoveContext& c, Id t) { tryMove(c, *resize, [&] { return resize->propose(c, t); }); }});
+		if (p.legsVary())  // eq. 26: without a leg spread every table keeps its class's legs, draw for draw
+		{
+			const auto legFit = std::make_shared<TableLegFit>();
+			m_entries.push_back({"table legs", Target::Table, Slot::Refit, 1,
+								 [=](MoveContext& c, Id t) { tryMove(c, *legFit, [&] { return legFit->propose(c, t); }); }});
+		}
 	}
 	if (!p.walls) return;  // without walls the sweep is the paper's, draw for draw
 	const auto walls = std::make_shared<WallBirthDeath>(p);

@@ -29,9 +29,11 @@ Proposal TableClassSwitch::switchTo(MoveContext& ctx, model::Id t, int to)
 	ctx.bb.setTable(t, now);
 	Proposal p{Move::Refit, model::logJointAround(ctx.bb, t) - before};
 	p.logForward = p.logReverse = -std::log(static_cast<double>(ctx.mp.classCount() - 1));
-	// A resized table (size_moves) is snapped to the nominal size: switching back does not
-	// restore its own size, so that switch has no reverse.
-	if (m_old.d_length != 0 || m_old.d_width != 0) p.logReverse = -std::numeric_limits<double>::infinity();
+	// A resized table (size_moves), or one with legs of its own (eq. 26), is snapped to the
+	// nominal size and legs: switching back does not restore its own, so that switch has no reverse.
+	if (m_old.d_length != 0 || m_old.d_width != 0 || m_old.leg_width != ctx.mp.legWidthOf(m_old.cls) ||
+		m_old.texture != ctx.mp.textureOf(m_old.cls))
+		p.logReverse = -std::numeric_limits<double>::infinity();
 	return p;
 }
 

@@ -26,8 +26,12 @@ double logTablePrior(const ModelParams& p);
  *  prior) times eq. 24's size term. */
 double logTablePrior(const Table& t, const ModelParams& p);
 /** The size prior relative to the class's nominal size (eq. 24):
- *  -(d_length^2 + d_width^2) / (2 size_sigma^2); 0 without a catalogue. */
+ *  -(d_length^2 + d_width^2) / (2 size_sigma^2), plus logLegPrior; 0 without a catalogue. */
 double logSizePrior(const Table& t, const ModelParams& p);
+/** The prior of a table's leg width and texture about its class's (eq. 26):
+ *  -(w - w_k)^2 / (2 leg_width_sigma^2) - (tau - tau_k)^2 / (2 texture_sigma^2), a term
+ *  only where the class's spread is > 0; 0 without a catalogue. */
+double logLegPrior(const Table& t, const ModelParams& p);
 
 /** Centre of corner i in 0..3 of a table (its class's length and width): (+,+), (-,+), (-,-), (+,-) in the table frame. */
 void tableCorner(const Table& t, int i, const ModelParams& p, double& x, double& y);

@@ -66,6 +66,9 @@ struct ModelParams
 	double widthOf(const Table& t) const { return widthOf(t.cls) + t.d_width; }
 	/** Spread of a class's length and width about its nominal ones (eq. 24); 0 without a catalogue. */
 	double sizeSigmaOf(int k) const { return classes.empty() ? 0.0 : classes[k].size_sigma; }
+	/** Whether some class lets its objects' leg width or texture differ from its nominal ones
+	 *  (a leg_width_sigma or texture_sigma > 0: eq. 26). */
+	bool legsVary() const;
 	/** Largest footprint diagonal and length over the classes (search radii, hash cells). */
 	double maxDiagonal() const;
 	double maxLength() const;

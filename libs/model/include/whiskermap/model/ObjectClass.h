@@ -17,11 +17,15 @@ struct ObjectClass
 	double texture = 0.7;  ///< texture of its legs, in [0, 1]
 	double size_sigma = 0.02;  ///< spread of length and width around the nominal ones, metres
 	double prior = 1.0;  ///< prior probability of the class (the catalogue's sum to 1)
+	/** Spread of an object's leg width around the nominal one, metres (eq. 26); 0: every
+	 *  object has the nominal leg width (optional key, default 0). */
+	double leg_width_sigma = 0;
+	double texture_sigma = 0;  ///< spread of its leg texture around the nominal one (eq. 26); 0: nominal
 
 	bool operator==(const ObjectClass& o) const
 	{
 		auto tie = [](const ObjectClass& c) {
-			return std::tie(c.name, c.label, c.length, c.width, c.leg_width, c.texture, c.size_sigma, c.prior);
+			return std::tie(c.name, c.label, c.length, c.width, c.leg_width, c.texture, c.size_sigma, c.prior, c.leg_width_sigma, c.texture_sigma);
 		};
 		return tie(*this) == tie(o);
 	}
