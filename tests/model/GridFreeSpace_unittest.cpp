@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 #include <whiskermap/model/Blackboard.h>
+#include <whiskermap/model/Densities.h>
 #include <whiskermap/model/GridFreeSpace.h>
 #include <whiskermap/model/Posterior.h>
 
@@ -72,5 +73,66 @@ TEST(GridFreeSpace, WallLogOddsAndTheJointCarryItOnlyWithFreeSpaceAndAGrid)
 		EXPECT_NEAR(logJoint(bb) - jointWithout, expected, 1e-9) << "free_space " << freeSpace;
 		bb.reset({});  // the grid is the map's, not the problem's: a reset keeps it
 		EXPECT_EQ(bb.sweptGrid(), &grid);
+	}
+}
+
+TEST(GridFreeSpace, ALegWhereNothingWasEverTouchedPaysPerPassOfItsCell)
+{
+	ModelParams p;  // sigma_r 0.01: a 5 cm leg's neighbourhood reaches 0.045 m from its centre
+	p.free_space_p_miss = 0.05;
+	SweptGrid g(0.1);
+	g.set(5, 5, {6, 0});  // the cell of (0.55, 0.55): swept 6 times, never touched
+	// eq. 27 by hand: h = 0.05 / (2 x 0.1) = 0.25; per pass log(1 - 0.95 x 0.25) = -0.2712.
+	EXPECT_NEAR(GridFreeSpace::logLegFactor(0.55, 0.55, 0.05, g, p), 6 * std::log(1 - 0.95 * 0.25), 1e-12);
+	EXPECT_NEAR(6 * std::log(0.7625), -1.6269, 1e-4);
+	// A 3 cm chair leg: h = 0.15, per pass log(1 - 0.95 x 0.15).
+	EXPECT_NEAR(GridFreeSpace::logLegFactor(0.55, 0.55, 0.03, g, p), 6 * std::log(1 - 0.95 * 0.15), 1e-12);
+	// A touch where the leg's own contacts would fall (within 0.045 m: cell (6, 5) from x =
+	// 0.6) says the cell is not empty: nothing. A touch farther away (cell (7, 5)) does not.
+	SweptGrid near = g, far = g;
+	near.set(6, 5, {0, 1});
+	far.set(7, 5, {0, 1});
+	EXPECT_EQ(GridFreeSpace::logLegFactor(0.57, 0.55, 0.05, near, p), 0.0);  // 0.57 + 0.045 reaches 0.615
+	EXPECT_NEAR(GridFreeSpace::logLegFactor(0.57, 0.55, 0.05, far, p), 6 * std::log(0.7625), 1e-12);
+	// Never passed, or touched in its own cell: nothing.
+	EXPECT_EQ(GridFreeSpace::logLegFactor(0.25, 0.55, 0.05, g, p), 0.0);
+	g.set(5, 5, {6, 2});
+	EXPECT_EQ(GridFreeSpace::logLegFactor(0.55, 0.55, 0.05, g, p), 0.0);
+}
+
+TEST(GridFreeSpace, LegsAndEmptyCornersCarryItInTheJointAndTheirLogOdds)
+{
+	// A 1.0 x 0.6 table at (1, 1) with one leg at corner 0 (1.5, 1.3); the grid swept every
+	// corner's cell 4 times, never touched. With free space and the grid, the leg pays eq. 27
+	// in its log-odds and the joint, the three empty corners in the table's log-odds and the joint.
+	SweptGrid grid(0.1);
+	ModelParams base;
+	base.free_space_p_miss = 0.05;
+	Table t{1, 1, 0, 0.05, 0.7};
+	double cx[4], cy[4];
+	tableCorners(t, base, cx, cy);
+	for (int k = 0; k < 4; k++) grid.set(grid.index(cx[k]), grid.index(cy[k]), {4, 0});
+	const double perCorner = GridFreeSpace::logLegFactor(cx[0], cy[0], 0.05, grid, base);
+	ASSERT_NEAR(perCorner, 4 * std::log(0.7625), 1e-12);
+	for (const bool freeSpace : {false, true})
+	{
+		ModelParams p = base;
+		p.free_space = freeSpace;
+		Blackboard bb(p);
+		bb.reset({});
+		const Id table = bb.addTable(t);
+		Leg l;
+		l.x = cx[0], l.y = cy[0], l.theta = 0, l.wx = l.wy = 0.05, l.texture = 0.7, l.parent = table;
+		const Id leg = bb.addLeg(l);
+		const double joint = logJoint(bb), legOdds = logOddsLeg(bb, leg), tableOdds = logOddsTable(bb, table);
+		const double gain = logLegLinkGain(bb, leg, table);
+		bb.setSweptGrid(&grid);
+		const double on = freeSpace ? 1 : 0;
+		EXPECT_NEAR(logJoint(bb) - joint, on * 4 * perCorner, 1e-9) << freeSpace;  // the leg and 3 empty corners
+		EXPECT_NEAR(logOddsTable(bb, table) - tableOdds, on * 3 * perCorner, 1e-9) << freeSpace;
+		// The leg's own factor (perCorner) and its link gain's change (it fills an empty corner
+		// that would pay perCorner) cancel: standing where a leg is implied anyway costs nothing more.
+		EXPECT_NEAR(logOddsLeg(bb, leg) - legOdds, 0, 1e-9) << freeSpace;
+		EXPECT_NEAR(logLegLinkGain(bb, leg, table) - gain, -on * perCorner, 1e-9) << freeSpace;
 	}
 }

@@ -70,14 +70,24 @@ Overlaps overlappingLegs(const Blackboard& bb, Id l)
 }
 
 // The factors a table owns given its children: phi_a, phi_b (eqs. 15, 17) and the free space
-// at its empty corners (eq. 21).
+// at its empty corners (eq. 21; in the lasting map, the swept grid's: eq. 27).
 double tableFactors(const Blackboard& bb, Id t, const CornerCounts& counts)
 {
-	return logTableConstraints(counts, bb.params()) + bb.swept().logEmptyCorners(bb.table(t), counts, bb.params());
+	const ModelParams& p = bb.params();
+	double sum = logTableConstraints(counts, p) + bb.swept().logEmptyCorners(bb.table(t), counts, p);
+	if (p.free_space && bb.sweptGrid()) sum += GridFreeSpace::logEmptyCorners(bb.table(t), counts, *bb.sweptGrid(), p);
+	return sum;
 }
 
-// The free space a leg reaches into (eq. 21).
-double freeSpace(const Blackboard& bb, Id l) { return bb.swept().logFactor(legRect(bb.leg(l)), bb.params()); }
+// The free space a leg reaches into (eq. 21; in the lasting map, the swept grid's: eq. 27).
+double freeSpace(const Blackboard& bb, Id l)
+{
+	const ModelParams& p = bb.params();
+	const Leg& leg = bb.leg(l);
+	double sum = bb.swept().logFactor(legRect(leg), p);
+	if (p.free_space && bb.sweptGrid()) sum += GridFreeSpace::logLegFactor(leg.x, leg.y, leg.wx, *bb.sweptGrid(), p);
+	return sum;
+}
 
 // The folded contacts of a leg against their null cause: log p(S | L) - log c_S summed
 // (eqs. 7, 9, 12).
