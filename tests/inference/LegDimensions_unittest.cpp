@@ -107,3 +107,44 @@ TEST(LegDimensions, SamplerInfersTheLegWidthAndTextureOfATable)
 	EXPECT_EQ(fixed.map.tables[0].leg_width, 0.05);
 	EXPECT_EQ(fixed.map.tables[0].texture, 0.7);
 }
+
+TEST(LegDimensions, ALegIsNeverWiderThanHalfTheSmallerLegSpacing)
+{
+	// A small class (0.2 x 0.12 m spacings, 4 cm legs) with a broad spread (0.5 m), its four
+	// legs each explaining two contacts on opposite faces 10 cm apart: the data want 10 cm
+	// legs; repeated leg fits climb to half the smaller spacing, 6 cm, and stop there.
+	ModelParams p;
+	model::ObjectClass small;
+	small.name = small.label = "stool";
+	small.length = 0.2, small.width = 0.12, small.leg_width = 0.04, small.texture = 0.7;
+	small.leg_width_sigma = 0.5;
+	p.classes = {small};
+	p.size_moves = true;
+	const Table truth{0, 0, 0.3, 0.1, 0.7};
+	std::vector<test::Touch> touches;
+	for (int corner = 0; corner < 4; corner++)
+		for (const int face : {0, 2}) touches.push_back({corner, face, 0});
+	test::ContextOnBoard b(p);
+	b.bb.reset(test::touchTable(truth, p, touches));
+	Table start = truth;
+	start.leg_width = 0.04;
+	const model::Id table = b.bb.addTable(start);
+	for (int corner = 0; corner < 4; corner++)
+	{
+		model::Leg leg;
+		model::tableCorner(start, corner, p, leg.x, leg.y);
+		leg.theta = start.theta, leg.wx = leg.wy = 0.04, leg.texture = 0.7, leg.parent = table;
+		const model::Id l = b.bb.addLeg(leg);
+		for (size_t s = 0; s < touches.size(); s++)
+			if (touches[s].corner == corner) b.bb.setShapeletParent(s, l);
+	}
+	double widest = 0;
+	for (int k = 0; k < 30; k++)
+	{
+		inference::moves::TableLegFit move;
+		if (move.propose(b.ctx, table)) move.finish(b.ctx, true);
+		widest = std::max(widest, b.bb.table(table).leg_width);
+	}
+	EXPECT_LE(widest, 0.06 + 1e-12);
+	EXPECT_GT(b.bb.table(table).leg_width, 0.059);  // it did climb: without the bound it would pass 6 cm
+}

@@ -9,6 +9,7 @@
 namespace whiskermap::inference::moves
 {
 using model::Id;
+constexpr double MAX_STEP = 0.005;  ///< the leg width fit's step at most, metres
 
 bool TableLegFit::apply(MoveContext& ctx, double legWidth, double texture)
 {
@@ -61,17 +62,21 @@ std::optional<Proposal> TableLegFit::propose(MoveContext& ctx, Id t)
 	// Leg width: the vertex of the parabola through the exact target at width - h, width, width + h.
 	if (valid && cls.leg_width_sigma > 0)
 	{
-		const double h = cls.leg_width_sigma / 2, lo = std::max(1e-3, width - 2 * h), w0 = width;
+		// Within two steps, at least 1 mm and at most half the smaller leg spacing (wider legs
+		// would touch each other).
+		const model::Table& now = bb.table(t);
+		const double h = std::min(cls.leg_width_sigma / 2, MAX_STEP), w0 = width, lo = std::max(1e-3, w0 - 2 * h);
+		const double hi = std::min(w0 + 2 * h, std::min(ctx.mp.lengthOf(now), ctx.mp.widthOf(now)) / 2);
 		const double f0 = after;
 		double fm = -std::numeric_limits<double>::infinity(), fp = fm;
 		if (w0 - h >= lo && apply(ctx, w0 - h, texture)) fm = model::logJointAround(bb, t);
-		if (apply(ctx, w0 + h, texture)) fp = model::logJointAround(bb, t);
+		if (w0 + h <= hi && apply(ctx, w0 + h, texture)) fp = model::logJointAround(bb, t);
 		const double curvature = fm - 2 * f0 + fp;
 		double best = fm > f0 ? w0 - h : w0, fBest = std::max(f0, fm);
 		if (fp > fBest) best = w0 + h, fBest = fp;
 		if (std::isfinite(curvature) && curvature < 0)
 		{
-			const double vertex = std::clamp(w0 + h * (fm - fp) / (2 * curvature), lo, w0 + 2 * h);
+			const double vertex = std::clamp(w0 + h * (fm - fp) / (2 * curvature), lo, std::max(lo, hi));
 			if (apply(ctx, vertex, texture))
 			{
 				const double fv = model::logJointAround(bb, t);

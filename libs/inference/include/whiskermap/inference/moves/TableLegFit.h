@@ -12,11 +12,11 @@ namespace whiskermap::inference::moves
  *  Texture: twice, the closed-form optimum of eqs. 6 and 26 given the textures of its legs
  *  that explain shapelets, those legs then refitted (their texture is the mean of the table's
  *  and their contacts'). Leg width: a parabola through the exact logJointAround at the current
- *  width and one step (leg_width_sigma / 2) either side, each with the legs refitted as squares
- *  of that width; its vertex (at most two steps away, else the best of the three). Judged on
- *  the exact change of logJoint. Deterministic (logForward = 0), no reverse (logReverse =
- *  -inf) unless nothing moved (0). Not with broad proposals (an optimiser, like the leg pose
- *  search). */
+ *  width and one step (leg_width_sigma / 2, at most 5 mm) either side, each with the legs
+ *  refitted as squares of that width; its vertex (at most two steps away and half the table's
+ *  smaller leg spacing, at least 1 mm), else the best of the three. Judged on the exact change
+ *  of logJoint. Deterministic (logForward = 0), no reverse (logReverse = -inf) unless nothing
+ *  moved (0). Not with broad proposals (an optimiser, like the leg pose search). */
 class TableLegFit
 {
    public:
