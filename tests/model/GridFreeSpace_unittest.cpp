@@ -136,3 +136,21 @@ TEST(GridFreeSpace, LegsAndEmptyCornersCarryItInTheJointAndTheirLogOdds)
 		EXPECT_NEAR(logLegLinkGain(bb, leg, table) - gain, -on * perCorner, 1e-9) << freeSpace;
 	}
 }
+
+TEST(GridFreeSpace, AWallOfAnyLengthIsScoredInBoundedTime)
+{
+	// Eq. 25 samples the centre line at most 16,384 times: a quarter cell apart up to 409.6 m
+	// (0.1 m cells). A 1,000 m wall along a row of swept, untouched cells (samples 6.1 cm
+	// apart) still visits each of its 10,001 cells once; a 3,000 m one (samples 18.3 cm apart,
+	// each in a cell of its own) pays for 16,385 of its 30,001 cells: bounded, a lower bound.
+	ModelParams p;
+	p.free_space_p_miss = 0.05;
+	SweptGrid g(0.1);
+	for (int32_t ix = 0; ix <= 30000; ix++) g.set(ix, 0, {1, 0});
+	Wall w;
+	w.x0 = 0.05, w.y0 = 0.05, w.y1 = 0.05, w.thickness = 0.1;
+	w.x1 = 1000.05;
+	EXPECT_NEAR(GridFreeSpace::logWallFactor(w, g, p), 10001 * std::log(0.525), 1e-6);
+	w.x1 = 3000.05;
+	EXPECT_NEAR(GridFreeSpace::logWallFactor(w, g, p), 16385 * std::log(0.525), 1e-6);
+}

@@ -106,6 +106,26 @@ TEST(Wall, EndCapsByHand)
 	EXPECT_EQ(bestWallFace(contact(-0.02, -0.07, M_PI, 0.3), wall, p), -2);
 }
 
+TEST(Wall, EndCapsOfAThickWallByHand)
+{
+	// The caps span the wall's thickness, whatever it is: a 0.3 m wall from (0, 0) to (2, 0)
+	// has cap +2 at x = 2 for y in [-0.15, 0.15] and its long face +1 at y = 0.15.
+	const ModelParams p = handParams();
+	const Wall thick{0, 0, 2, 0, 0.3, 0.3};
+	const Wall::FaceHit in = thick.hit(2.03, 0.12, 2);
+	EXPECT_NEAR(in.across, 0.03, 1e-12);
+	EXPECT_NEAR(in.along, 0.12, 1e-12);
+	EXPECT_EQ(in.excess, 0);  // within the cap (on the 0.1 m wall it would be 0.07 past it)
+	EXPECT_NEAR(thick.hit(2.03, 0.18, 2).excess, 0.03, 1e-12);
+	EXPECT_NEAR(thick.hit(1, 0.17, 1).across, 0.02, 1e-12);
+	// 1 cm outside cap +2, 12 cm off the centre line, its own normal: log p = 3 - 1 (eq. 22 on
+	// the cap, as on the thin wall's cap at 2 cm off the line).
+	EXPECT_NEAR(logShapeletGivenWall(contact(2.01, 0.12, 0, 0.3), thick, p), 2, 1e-9);
+	EXPECT_EQ(bestWallFace(contact(2.01, 0.12, 0, 0.3), thick, p), 2);
+	// The thin wall explains the same contact far worse: 7 cm past its cap's end.
+	EXPECT_LT(logShapeletGivenWall(contact(2.01, 0.12, 0, 0.3), wall, p), -40);
+}
+
 TEST(Wall, PriorByHand)
 {
 	const ModelParams p = handParams();
