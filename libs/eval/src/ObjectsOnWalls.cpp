@@ -1,5 +1,7 @@
 #include <whiskermap/eval/ObjectsOnWalls.h>
 
+#include <algorithm>
+
 namespace whiskermap::eval
 {
 std::vector<size_t> ObjectsOnWalls::of(const world::World& w, const std::vector<world::Table>& estimated)
@@ -12,15 +14,15 @@ std::vector<size_t> ObjectsOnWalls::of(const world::World& w, const std::vector<
 		if (o.table < 0) walls.push_back(o);
 	std::vector<size_t> on;
 	for (size_t i = 0; i < estimated.size(); i++)
-	{
-		bool hit = false;
-		for (int k = 0; k < 4 && !hit; k++)
+		for (int k = 0; k < 4; k++)
 		{
 			const auto leg = estimated[i].leg(k, static_cast<int>(i));
-			for (const auto& s : walls) hit = hit || leg.intersects(s);
+			if (std::any_of(walls.begin(), walls.end(), [&](const world::Obstacle& s) { return leg.intersects(s); }))
+			{
+				on.push_back(i);
+				break;
+			}
 		}
-		if (hit) on.push_back(i);
-	}
 	return on;
 }
 }  // namespace whiskermap::eval

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -54,9 +55,7 @@ ModelParams ModelParams::fromIni(core::IniSection& sec)
 
 bool ModelParams::legsVary() const
 {
-	for (const auto& c : classes)
-		if (c.leg_width_sigma > 0 || c.texture_sigma > 0) return true;
-	return false;
+	return std::any_of(classes.begin(), classes.end(), [](const ObjectClass& c) { return c.legsVary(); });
 }
 
 double ModelParams::maxDiagonal() const

@@ -36,7 +36,7 @@ std::optional<Proposal> TableLegFit::propose(MoveContext& ctx, Id t)
 	model::Blackboard& bb = ctx.bb;
 	if (ctx.broad()) return std::nullopt;
 	const model::ObjectClass& cls = ctx.mp.classes.at(static_cast<size_t>(bb.table(t).cls));
-	if (!(cls.leg_width_sigma > 0 || cls.texture_sigma > 0)) return std::nullopt;
+	if (!cls.legsVary()) return std::nullopt;
 	m_table = t;
 	m_old = bb.table(t);
 	m_savedLegs.clear();
@@ -48,10 +48,10 @@ std::optional<Proposal> TableLegFit::propose(MoveContext& ctx, Id t)
 	bool valid = true;
 	// Texture (eqs. 6 + 26): (sum tau_L / sigma_tau^2 + tau_k / (2 s^2)) / (n / sigma_tau^2 + 1 / (2 s^2))
 	// over the legs that explain data; their textures then refitted to the new one; twice.
+	const double kPrior = 1 / (2 * cls.texture_sigma * cls.texture_sigma), kLeg = 1 / (ctx.mp.sigma_tau * ctx.mp.sigma_tau);
 	if (cls.texture_sigma > 0)
 		for (int round = 0; round < 2 && valid; round++)
 		{
-			const double kPrior = 1 / (2 * cls.texture_sigma * cls.texture_sigma), kLeg = 1 / (ctx.mp.sigma_tau * ctx.mp.sigma_tau);
 			double num = kPrior * cls.texture, den = kPrior;
 			for (const auto& [l, saved] : m_savedLegs)
 				if (bb.explains(l)) num += kLeg * bb.leg(l).texture, den += kLeg;
@@ -68,24 +68,29 @@ std::optional<Proposal> TableLegFit::propose(MoveContext& ctx, Id t)
 		const double h = std::min(cls.leg_width_sigma / 2, MAX_STEP), w0 = width, lo = std::max(1e-3, w0 - 2 * h);
 		const double hi = std::min(w0 + 2 * h, std::min(ctx.mp.lengthOf(now), ctx.mp.widthOf(now)) / 2);
 		const double f0 = after;
-		double fm = -std::numeric_limits<double>::infinity(), fp = fm;
-		if (w0 - h >= lo && apply(ctx, w0 - h, texture)) fm = model::logJointAround(bb, t);
-		if (w0 + h <= hi && apply(ctx, w0 + h, texture)) fp = model::logJointAround(bb, t);
+		double fm = -std::numeric_limits<double>::infinity(), fp = fm, held = w0;  // held: the width the board holds
+		if (w0 - h >= lo && apply(ctx, held = w0 - h, texture)) fm = model::logJointAround(bb, t);
+		if (w0 + h <= hi && apply(ctx, held = w0 + h, texture)) fp = model::logJointAround(bb, t);
 		const double curvature = fm - 2 * f0 + fp;
 		double best = fm > f0 ? w0 - h : w0, fBest = std::max(f0, fm);
 		if (fp > fBest) best = w0 + h, fBest = fp;
 		if (std::isfinite(curvature) && curvature < 0)
 		{
 			const double vertex = std::clamp(w0 + h * (fm - fp) / (2 * curvature), lo, std::max(lo, hi));
-			if (apply(ctx, vertex, texture))
+			if (apply(ctx, held = vertex, texture))
 			{
 				const double fv = model::logJointAround(bb, t);
 				if (fv > fBest) best = vertex, fBest = fv;
 			}
 		}
-		valid = apply(ctx, best, texture);
 		width = best;
-		after = valid ? model::logJointAround(bb, t) : 0;
+		if (held != best)  // else the board holds it, scored
+		{
+			valid = apply(ctx, best, texture);
+			after = valid ? model::logJointAround(bb, t) : 0;
+		}
+		else
+			after = fBest;
 	}
 	if (!valid)
 	{

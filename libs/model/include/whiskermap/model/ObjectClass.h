@@ -22,6 +22,9 @@ struct ObjectClass
 	double leg_width_sigma = 0;
 	double texture_sigma = 0;  ///< spread of its leg texture around the nominal one (eq. 26); 0: nominal
 
+	/** Whether its objects' leg width or texture may differ from its nominal ones (eq. 26). */
+	bool legsVary() const { return leg_width_sigma > 0 || texture_sigma > 0; }
+
 	bool operator==(const ObjectClass& o) const
 	{
 		auto tie = [](const ObjectClass& c) {
