@@ -5,6 +5,10 @@
 #include <whiskermap/eval/EvalReport.h>
 #include <whiskermap/eval/TrajectoryEvaluation.h>
 
+#include "../TempDirTest.h"
+
+#include <cmath>
+
 using namespace whiskermap;
 using Entry = world::PathLog::Entry;
 using mrpt::poses::CPose2D;
@@ -134,4 +138,64 @@ TEST(TrajectoryEvaluation, JsonAndTextReports)
 	EXPECT_NE(text.find("trajectory: 81 poses, 10.000 m of true travel"), std::string::npos) << text;
 	EXPECT_NE(text.find("ATE RMSE (m)"), std::string::npos) << text;
 	EXPECT_NE(text.find("final pose error: 0.2000 m"), std::string::npos) << text;
+}
+
+class TrajectoryFiles : public test::TempDirTest
+{
+   protected:
+	std::string write(const std::string& name, const std::vector<Entry>& path)
+	{
+		world::PathLog::Writer w(this->path(name), name);
+		for (const auto& e : path) w.write(e.t, CPose2D(e.pose));
+		w.close();
+		return this->path(name);
+	}
+};
+
+TEST_F(TrajectoryFiles, StreamedFromFilesTheFiguresAreThoseOfThePathsInMemory)
+{
+	// A wobbling, turning estimate: every figure non-trivial. Streamed from the files, the
+	// figures equal those of the same files read into memory, to the last bit.
+	auto est = straight();
+	for (size_t i = 0; i < est.size(); i++)
+		est[i].pose = {1.01 * est[i].pose.x + 0.03 * std::sin(0.3 * i), 0.02 * std::cos(0.2 * i), 0.01 * i};
+	const auto e = write("est.txt", est), g = write("gt.txt", straight());
+	const auto a = eval::TrajectoryEvaluation::compute(e, g, eval::EvalOptions{});
+	const auto b = eval::TrajectoryEvaluation::compute(
+		world::PathLog::read(e), world::PathLog::read(g), eval::EvalOptions{});
+	EXPECT_GT(a.aligned_rmse_m, 0.01);
+	EXPECT_GT(a.rpe_rot_deg_per_m, 0.1);
+	EXPECT_EQ(a.poses, b.poses);
+	EXPECT_EQ(a.rpe_segments, b.rpe_segments);
+	for (const auto& [x, y] : {std::pair{a.length_m, b.length_m}, {a.ate_rmse_m, b.ate_rmse_m},
+			 {a.ate_max_m, b.ate_max_m}, {a.ate_yaw_rmse_deg, b.ate_yaw_rmse_deg}, {a.alignment.yaw, b.alignment.yaw},
+			 {a.alignment.t.x(), b.alignment.t.x()}, {a.aligned_rmse_m, b.aligned_rmse_m},
+			 {a.aligned_max_m, b.aligned_max_m}, {a.rpe_trans, b.rpe_trans}, {a.rpe_rot_deg_per_m, b.rpe_rot_deg_per_m},
+			 {a.final_error_m, b.final_error_m}, {a.final_yaw_err_deg, b.final_yaw_err_deg}})
+		EXPECT_EQ(x, y);
+	// A limit scores the first poses of each; both must hold that many.
+	const auto first = eval::TrajectoryEvaluation::compute(e, g, eval::EvalOptions{}, 40);
+	EXPECT_EQ(first.poses, 40u);
+	EXPECT_NEAR(first.length_m, 39 * 0.125, 1e-12);
+	try
+	{
+		eval::TrajectoryEvaluation::compute(e, g, eval::EvalOptions{}, 82);
+		FAIL();
+	}
+	catch (const core::Error& x)
+	{
+		EXPECT_EQ(std::string(x.what()), e + ": holds 81 poses, 82 needed (one line per sweep)");
+	}
+	// Unequal counts are found before any figure, as in memory.
+	auto shorter = straight();
+	shorter.pop_back();
+	try
+	{
+		eval::TrajectoryEvaluation::compute(write("short.txt", shorter), g, eval::EvalOptions{});
+		FAIL();
+	}
+	catch (const core::Error& x)
+	{
+		EXPECT_EQ(std::string(x.what()), path("short.txt") + ": holds 80 poses, but " + g + " holds 81 (one line per sweep in both)");
+	}
 }

@@ -93,3 +93,82 @@ TEST(PathTree, ALongPathIsFreedWithoutRecursionAndItsNodesReused)
 	tree.reset(2, {});
 	EXPECT_EQ(tree.nodes(), 1u);
 }
+
+TEST(PathTree, SettledPosesAreTheStartEveryPathSharesAndAreFreed)
+{
+	// Against the plain form again: what settle() hands over, followed by path(i), is particle
+	// i's whole path, for every i; and it hands over all it can (the particles' paths part at
+	// the first pose left, or one of them ends there).
+	std::mt19937 rng(11);
+	for (const size_t particles : {1u, 2u, 6u})
+	{
+		PathTree tree;
+		tree.reset(particles, {0, 0, 0});
+		std::vector<std::vector<TPose2D>> plain(particles, {{0, 0, 0}});
+		std::vector<TPose2D> settled;
+		for (int step = 0; step < 400; step++)
+		{
+			for (size_t i = 0; i < plain.size(); i++)
+			{
+				const TPose2D p{double(step), double(i), double(rng() % 1000) / 1000};
+				tree.extend(i, p);
+				plain[i].push_back(p);
+			}
+			if (rng() % 2 == 0)
+			{
+				std::vector<size_t> parents(particles);
+				for (auto& q : parents) q = rng() % (1 + plain.size() / 3);  // few survivors: paths merge
+				std::sort(parents.begin(), parents.end());
+				std::vector<std::vector<TPose2D>> next;
+				for (const size_t q : parents) next.push_back(plain[q]);
+				plain = next;
+				tree.resample(parents);
+			}
+			if (rng() % 4 != 0) continue;
+			const size_t before = settled.size();
+			const size_t handed = tree.settle([&](const TPose2D& p) { settled.push_back(p); });
+			EXPECT_EQ(handed, settled.size() - before);
+			EXPECT_EQ(tree.settled(), settled.size());
+			bool parted = false;
+			for (size_t i = 0; i < plain.size(); i++)
+			{
+				auto whole = settled;
+				const auto rest = tree.path(i);
+				whole.insert(whole.end(), rest.begin(), rest.end());
+				ASSERT_TRUE(samePath(whole, plain[i])) << step << " " << i;
+				parted = parted || rest.size() == 1 || !samePath({rest[1]}, {tree.path(0)[1]});
+			}
+			EXPECT_TRUE(parted) << "settle() left a pose every path shares, step " << step;
+		}
+		EXPECT_LT(tree.nodes(), 400u * particles / 2);  // the settled poses are freed
+	}
+}
+
+TEST(PathTree, MergingOlderThanALagGivesEveryPathTheChosenOnesPast)
+{
+	// Four particles never resampled: four separate paths. After mergeOlderThan(2, 10) each
+	// keeps its latest 11 poses (the lag and the latest) and has particle 2's past before
+	// them; the pasts only the others held are freed, and settle() can then hand them over.
+	PathTree tree;
+	tree.reset(4, {});
+	std::vector<std::vector<TPose2D>> plain(4, {TPose2D{}});
+	for (int step = 0; step < 100; step++)
+		for (size_t i = 0; i < 4; i++)
+		{
+			tree.extend(i, {double(step), double(i), 0});
+			plain[i].push_back({double(step), double(i), 0});
+		}
+	ASSERT_EQ(tree.nodes(), 1 + 4 * 100u);
+	tree.mergeOlderThan(2, 10);
+	EXPECT_EQ(tree.nodes(), 1 + 100u + 3 * 11u);
+	for (size_t i = 0; i < 4; i++)
+	{
+		auto expected = plain[2];
+		std::copy(plain[i].end() - 11, plain[i].end(), expected.end() - 11);
+		EXPECT_TRUE(samePath(tree.path(i), expected)) << i;
+	}
+	std::vector<TPose2D> settled;
+	tree.settle([&](const TPose2D& p) { settled.push_back(p); });
+	EXPECT_EQ(settled.size(), 101u - 12u);  // the start and particle 2's poses before the meeting one
+	EXPECT_EQ(tree.nodes(), 1 + 4 * 11u);  // the meeting pose and each particle's 11
+}

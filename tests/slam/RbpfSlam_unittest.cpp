@@ -79,14 +79,47 @@ TEST(RbpfSlam, OnePosePerSweepFromTheKnownStart)
 	p.particles = 4;
 	const auto sweeps = firstSweeps(40);
 	slam::RbpfSlam s(p, maps::MapConfig::load(p.map_config));
-	for (const auto& sw : sweeps) s.step(sw);
+	for (const auto& sw : sweeps)
+	{
+		const auto& st = s.step(sw);
+		EXPECT_TRUE(st.ess > 0 && st.ess <= 1 + 1e-9);
+	}
 	const auto path = s.bestPath();
 	ASSERT_EQ(path.size(), sweeps.size());
-	ASSERT_EQ(s.steps().size(), sweeps.size());
+	ASSERT_EQ(s.stepCount(), sweeps.size());
 	// The first pose is the start plus one step's motion noise (millimetres).
 	EXPECT_LT(path[0].distanceTo(sweeps[0].robotPose), 0.01);
-	for (const auto& st : s.steps()) EXPECT_TRUE(st.ess > 0 && st.ess <= 1 + 1e-9);
 	EXPECT_EQ(s.particles().particlesCount(), 4u);
+}
+
+TEST(RbpfSlam, SettledPosesAndTheBestPathMakeOnePathInBoundedMemory)
+{
+	// Never resampled (resample_ess 0), three particles' lineages never meet: with a limit of
+	// 60 poses, settle() cuts them at a lag of 60 / (4 x 3) = 5 sweeps whenever more are
+	// kept, so the poses kept stay at the limit, and the poses handed over plus the best path are one pose per sweep.
+	auto p = slam::TSlamParams::load(SLAM_INI);
+	p.particles = 3, p.resample_ess = 0;
+	const auto sweeps = firstSweeps(120);
+	slam::RbpfSlam s(p, maps::MapConfig::load(p.map_config));
+	s.setPathLimit(60);
+	std::vector<mrpt::poses::CPose2D> path;
+	size_t most = 0;
+	for (const auto& sw : sweeps)
+	{
+		s.step(sw);
+		const size_t handed = s.settle([&](const mrpt::poses::CPose2D& q) { path.push_back(q); });
+		EXPECT_EQ(s.settledSweeps(), path.size());
+		EXPECT_LE(handed, path.size());
+		most = std::max(most, s.paths().nodes());
+	}
+	EXPECT_LE(most, 60u + 3u);  // one step's growth past the limit before the cut
+	EXPECT_GT(path.size(), 100u);
+	const auto rest = s.bestPath();
+	EXPECT_LE(rest.size(), 60u / 3);  // what the limit leaves a particle
+	path.insert(path.end(), rest.begin(), rest.end());
+	ASSERT_EQ(path.size(), sweeps.size());
+	EXPECT_LT(path[0].distanceTo(sweeps[0].robotPose), 0.01);
+	EXPECT_LT(path.back().distanceTo(sweeps.back().robotPose), 0.5);
 }
 
 TEST(RbpfSlam, SameSeedSamePathOtherSeedOtherPath)
@@ -169,8 +202,7 @@ TEST(RbpfSlam, ResamplingLeavesEqualWeightsAndOneLatestPosePerParticle)
 	size_t k = 0;
 	for (; k < sweeps.size(); k++)
 	{
-		s.step(sweeps[k]);
-		if (!s.steps().back().resampled && spread() < -0.2 && spread() > -1) break;
+		if (!s.step(sweeps[k]).resampled && spread() < -0.2 && spread() > -1) break;
 	}
 	ASSERT_LT(k, sweeps.size());
 	std::vector<std::vector<mrpt::math::TPose2D>> before;
@@ -207,7 +239,7 @@ TEST(RbpfSlam, ResampledCopiesAreClonesThatGoTheirOwnWay)
 	const auto sweeps = firstSweeps(400);
 	slam::RbpfSlam s(p, maps::MapConfig::load(p.map_config));
 	size_t k = 0;
-	while (k < sweeps.size() && !(s.steps().size() > 0 && s.steps().back().resampled)) s.step(sweeps[k++]);
+	while (k < sweeps.size() && !(s.stepCount() > 0 && s.lastStep().resampled)) s.step(sweeps[k++]);
 	ASSERT_LT(k, sweeps.size());  // the ESS fell below resample_ess: some parent will be drawn twice
 	s.resample();
 	const auto& pdf = s.particles();

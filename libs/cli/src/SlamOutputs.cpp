@@ -12,27 +12,22 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 namespace whiskermap::cli
 {
 namespace
 {
 using mrpt::img::TColor;
-using Path = std::vector<world::PathLog::Entry>;
 const TColor TRUTH(0, 0, 200), ESTIMATE(200, 40, 40), ODOMETRY(230, 140, 0), MAP(120, 120, 120);
 
-void writePath(OutputDir& out, const std::string& name, const std::string& title, const Path& path)
+/** The first `n` poses of a path file, an even subset of at most 20,000 (the picture's). */
+std::vector<mrpt::poses::CPose2D> picturePoses(const std::string& file, size_t n)
 {
-	world::PathLog::Writer w(out.path(name), title);
-	for (const auto& e : path) w.write(e.t, mrpt::poses::CPose2D(e.pose));
-	w.close();
-}
-
-std::vector<mrpt::poses::CPose2D> poses(const Path& path)
-{
-	std::vector<mrpt::poses::CPose2D> out;
-	for (const auto& e : path) out.emplace_back(e.pose);
-	return out;
+	Decimator<mrpt::poses::CPose2D> kept(20000);
+	world::PathLog::Reader r(file);
+	for (world::PathLog::Entry e; r.count() < n && r.next(e);) kept.add(mrpt::poses::CPose2D(e.pose));
+	return kept.items();
 }
 
 double quantile(std::vector<double> v, double q)
@@ -42,12 +37,11 @@ double quantile(std::vector<double> v, double q)
 	return v[static_cast<size_t>(std::floor(q * (v.size() - 1) + 0.5))];
 }
 
-/** {"trajectory": {...}} of whisker-eval --json, for `est` against the truth. */
-nlohmann::ordered_json trajectoryJson(
-	const Path& est, const Path& truth, const std::string& label, const std::string& truthLabel)
+/** {"trajectory": {...}} of whisker-eval --json. */
+nlohmann::ordered_json trajectoryJson(const eval::TrajectoryEvaluation& t)
 {
 	eval::EvalReport r;
-	r.trajectory = eval::TrajectoryEvaluation::compute(est, truth, r.options, label, truthLabel);
+	r.trajectory = t;
 	return nlohmann::ordered_json::parse(r.toJson());
 }
 
@@ -58,47 +52,46 @@ void drawPaths(OutputDir& out, const SlamOutputs::TRun& run, const MapOutputs::T
 	if (s.world)
 		for (const auto& t : s.world->tables) img.table(t, TRUTH, 1);
 	for (const auto& t : run.mapTables) img.table(t, MAP, 2);
-	img.path(poses(run.odometry), ODOMETRY, 1);
-	if (run.truth) img.path(poses(*run.truth), TRUTH, 1);
-	img.path(poses(run.estimated), ESTIMATE, 2);
+	img.path(picturePoses(run.odometryFile, run.sweeps), ODOMETRY, 1);
+	if (!run.truthPath.empty()) img.path(picturePoses(run.truthPath, run.sweeps), TRUTH, 1);
+	img.path(picturePoses(run.estimatedFile, run.sweeps), ESTIMATE, 2);
 	img.caption(std::filesystem::path(run.input).filename().string() + ": paths and the best particle's map");
-	img.caption(std::string("SLAM (red), odometry (orange)") + (run.truth ? ", truth (blue)" : "") + ", map (grey)" +
-				(s.world ? ", true tables" : ""));
+	img.caption(std::string("SLAM (red), odometry (orange)") + (run.truthPath.empty() ? "" : ", truth (blue)") +
+				", map (grey)" + (s.world ? ", true tables" : ""));
 	img.save(out.path("paths.png"));
 }
 
-void writeSummary(const std::string& path, const SlamOutputs::TRun& run)
+struct Scores
 {
-	const auto& steps = run.slam->steps();
-	std::vector<double> ms;
-	nlohmann::ordered_json ess = nlohmann::ordered_json::array();  // normalised ESS before resampling, per sweep
-	size_t resamplings = 0;
-	double total = 0, minEss = 1;
-	for (const auto& st : steps)
-	{
-		ms.push_back(st.ms), total += st.ms, resamplings += st.resampled, minEss = std::min(minEss, st.ess);
-		ess.push_back(std::round(st.ess * 1e4) / 1e4);
-	}
+	eval::TrajectoryEvaluation estimated, odometry;
+};
+
+void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const std::optional<Scores>& scores)
+{
+	const auto& st = run.steps;
+	nlohmann::ordered_json ess = nlohmann::ordered_json::array();  // normalised ESS before resampling
+	for (const double e : st.ess.items()) ess.push_back(std::round(e * 1e4) / 1e4);
 	rusage usage{};
 	::getrusage(RUSAGE_SELF, &usage);
 	const auto& p = *run.params;
 	nlohmann::ordered_json j;  // a JSON writer: any path (quotes, backslashes) stays valid JSON
 	j["input"] = run.input, j["config"] = run.config, j["map_config"] = run.mapConfig;
-	j["particles"] = p.particles, j["seed"] = p.seed, j["sweeps"] = steps.size();
+	j["particles"] = p.particles, j["seed"] = p.seed, j["sweeps"] = st.count;
 	j["time_per_step_ms"] = {
-		{"mean", steps.empty() ? 0.0 : total / steps.size()},
-		{"median", quantile(ms, 0.5)},
-		{"p95", quantile(ms, 0.95)},
-		{"max", quantile(ms, 1)}};
-	j["resample_ess"] = p.resample_ess, j["resamplings"] = resamplings, j["ess_min"] = minEss;
+		{"mean", st.count ? st.totalMs / st.count : 0.0},
+		{"median", quantile(st.ms.items(), 0.5)},
+		{"p95", quantile(st.ms.items(), 0.95)},
+		{"max", st.maxMs}};
+	j["resample_ess"] = p.resample_ess, j["resamplings"] = st.resamplings, j["ess_min"] = st.minEss;
+	j["ess_stride"] = st.ess.stride();
 	j["ess"] = std::move(ess);
 	j["map_tables"] = run.mapTables.size();
 	j["map_matches_best_particle"] = run.mapMatches;
-	if (run.truth)
+	if (scores)
 	{
 		j["truth"] = run.truthPath;
-		j["estimated"] = trajectoryJson(run.estimated, *run.truth, "estimated path", run.truthPath);
-		j["odometry"] = trajectoryJson(run.odometry, *run.truth, "odometry path", run.truthPath);
+		j["estimated"] = trajectoryJson(scores->estimated);
+		j["odometry"] = trajectoryJson(scores->odometry);
 	}
 	j["wall_time_s"] = run.wallSeconds;
 	j["peak_rss_mb"] = usage.ru_maxrss / 1024.0;
@@ -110,19 +103,24 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run)
 
 std::string SlamOutputs::write(OutputDir& out, const TRun& run, const MapOutputs::TSettings& picture)
 {
-	writePath(out, "estimated_path.txt", "whisker-slam: the best particle's path, one pose per sweep", run.estimated);
-	writePath(out, "odometry_path.txt", "whisker-slam: the odometry of each sweep, as read from the rawlog", run.odometry);
-	drawPaths(out, run, picture);
-	writeSummary(out.path("summary.json"), run);
-	char line[256];
-	std::snprintf(line, sizeof(line), "%zu sweeps, %u particles, %zu tables", run.estimated.size(),
-				  run.params->particles, run.mapTables.size());
-	std::string text = line;
-	if (run.truth)
+	std::optional<Scores> scores;
+	if (!run.truthPath.empty())
 	{
+		// Streamed from the files: what whisker-eval --path FILE --truth TRUTH reports.
 		const eval::EvalOptions o;
-		const auto e = eval::TrajectoryEvaluation::compute(run.estimated, *run.truth, o);
-		const auto d = eval::TrajectoryEvaluation::compute(run.odometry, *run.truth, o);
+		scores = Scores{
+			eval::TrajectoryEvaluation::compute(run.estimatedFile, run.truthPath, o, run.sweeps),
+			eval::TrajectoryEvaluation::compute(run.odometryFile, run.truthPath, o, run.sweeps)};
+	}
+	drawPaths(out, run, picture);
+	writeSummary(out.path("summary.json"), run, scores);
+	char line[256];
+	std::snprintf(line, sizeof(line), "%zu sweeps, %u particles, %zu tables", run.sweeps, run.params->particles,
+				  run.mapTables.size());
+	std::string text = line;
+	if (scores)
+	{
+		const auto &e = scores->estimated, &d = scores->odometry;
 		std::snprintf(line, sizeof(line), "; ATE RMSE %.3f m (aligned %.3f), odometry %.3f m (aligned %.3f)",
 					  e.ate_rmse_m, e.aligned_rmse_m, d.ate_rmse_m, d.aligned_rmse_m);
 		text += line;

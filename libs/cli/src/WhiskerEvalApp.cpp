@@ -69,8 +69,7 @@ int run(const Options& o)
 	eval::EvalReport report;
 	report.options = o.eval;
 	if (!o.path.empty())
-		report.trajectory = eval::TrajectoryEvaluation::compute(
-			world::PathLog::read(o.path), world::PathLog::read(o.truth), o.eval, o.path, o.truth);
+		report.trajectory = eval::TrajectoryEvaluation::compute(o.path, o.truth, o.eval);  // streamed
 	if (o.map.empty())
 	{
 		std::cout << (o.json ? report.toJson() : report.toText());

@@ -4,17 +4,21 @@
 #include <whiskermap/cli/MapOutputs.h>
 #include <whiskermap/cli/MapRunner.h>
 #include <whiskermap/cli/OutputDir.h>
+#include <whiskermap/cli/PoseSpool.h>
 #include <whiskermap/cli/SlamOutputs.h>
 #include <whiskermap/cli/WhiskerSlamApp.h>
 #include <whiskermap/cli/runApp.h>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/maps/MapConfig.h>
+#include <whiskermap/slam/RbpfSlam.h>
+#include <whiskermap/world/PathLog.h>
 
 #include <algorithm>
 #include <chrono>
 #include <tuple>
 #include <cstdio>
+#include <deque>
 #include <filesystem>
 #include <optional>
 
@@ -80,22 +84,22 @@ int run(Options& o)
 	SlamOutputs::TRun result;
 	result.input = o.input, result.config = o.config, result.mapConfig = params.map_config, result.params = &params;
 	result.truthPath = o.truth.empty() ? truthBeside(o.input) : o.truth;
-	// The odometry of every sweep (this pass also verifies the whole rawlog).
-	const auto contents = obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
-		if (o.sweeps == 0 || result.odometry.size() < o.sweeps)
-			result.odometry.push_back({mrpt::Clock::toDouble(sw.obs->timestamp), sw.robotPose.asTPose(), 0});
-	});
+	// Count the sweeps (this pass also verifies the whole rawlog) and check the true path.
+	size_t all = 0;
+	const auto contents = obs::RawlogReader::forEach(o.input, [&](const Sweep&) { all++; });
 	if (contents.sweepCount == 0)
 		throw core::Error(o.input + ": holds no whisker observations (CObservationWhiskerContacts)");
-	const size_t n = result.odometry.size();
+	const size_t n = o.sweeps ? std::min(o.sweeps, all) : all;
+	result.sweeps = n;
 	if (!result.truthPath.empty())
 	{
-		auto truth = world::PathLog::read(result.truthPath);
-		if (truth.size() < n)
-			throw core::Error(result.truthPath + ": " + std::to_string(truth.size()) + " poses for " +
+		world::PathLog::Reader truth(result.truthPath);
+		for (world::PathLog::Entry e; truth.count() < n && truth.next(e);)
+		{
+		}
+		if (truth.count() < n)
+			throw core::Error(result.truthPath + ": " + std::to_string(truth.count()) + " poses for " +
 							  std::to_string(n) + " sweeps");
-		if (o.sweeps) truth.resize(n);
-		result.truth = std::move(truth);
 	}
 	MapOutputs::TSettings settings;
 	settings.input = o.input, settings.config = params.map_config, settings.world = world ? &*world : nullptr;
@@ -103,24 +107,38 @@ int run(Options& o)
 	settings.sweeps = n, settings.maxSigmaR = contents.maxSigmaR;
 	MapOutputs::pictureBounds(contents, settings.world, settings);
 
-	// The filter.
+	// The filter. The paths go to disk as they settle: memory holds the particles' maps and
+	// the poses not yet settled (doc/slam.md, "Memory").
 	const auto t0 = std::chrono::steady_clock::now();
 	OutputDir out(o.outdir);
 	slam::RbpfSlam slam(params, inits);
-	result.slam = &slam;
+	result.odometryFile = out.path(SlamOutputs::ODOMETRY), result.estimatedFile = out.path(SlamOutputs::ESTIMATED);
+	world::PathLog::Writer odometry(result.odometryFile, SlamOutputs::ODOMETRY_TITLE);
+	PoseSpool estimated;  // the best path, exact, for the map rebuilt at it
+	std::deque<double> times;  // timestamps of the sweeps whose poses have not settled
+	const auto settled = [&](const mrpt::poses::CPose2D& p) {
+		if (times.empty()) throw core::Error("whisker-slam: more poses settled than sweeps (a bug)");
+		estimated.write(times.front(), p.asTPose());
+		times.pop_front();
+	};
 	const bool bar = !o.quiet && ::isatty(STDERR_FILENO);
 	size_t k = 0;
 	obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
 		if (k >= n) return;
-		slam.step(sw);
+		const double t = mrpt::Clock::toDouble(sw.obs->timestamp);
+		odometry.write(t, sw.robotPose);
+		times.push_back(t);
+		const auto& step = slam.step(sw);
+		result.steps.add(step.ms, step.ess, step.resampled);
+		slam.settle(settled);
 		k++;
 		if (bar && (k % 10 == 0 || k == n))
 			std::fprintf(stderr, "\rwhisker-slam: %zu/%zu sweeps, %u particles, ESS %.2f", k, n, params.particles,
-						 slam.steps().back().ess);
+						 step.ess);
 	});
 	if (bar) std::fprintf(stderr, "\n");
-	const auto best = slam.bestPath();
-	for (size_t i = 0; i < n; i++) result.estimated.push_back({result.odometry[i].t, best[i].asTPose(), 0});
+	odometry.close();
+	for (const auto& p : slam.bestPath()) settled(p);
 
 	// The best particle's map, rebuilt by whisker-map's runner and writer at the best path's
 	// poses (the same insertions the particle made, so the same map: checked below).
@@ -128,11 +146,18 @@ int run(Options& o)
 	auto map = multimap.mapByClass<maps::CHierarchicalObjectMap>();
 	MapOutputs outputs(out, *map, settings);
 	MapRunner runner(multimap, *map, 1, [&](size_t i, const Sweep& sw, double ms) { outputs.onStep(i, sw, ms); });
+	world::PathLog::Writer estimatedText(result.estimatedFile, SlamOutputs::ESTIMATED_TITLE);
+	estimated.rewind();
 	k = 0;
 	obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
-		if (k < n) runner.add({best[k++], sw.obs});
+		double t;
+		mrpt::math::TPose2D pose;
+		if (k++ >= n || !estimated.next(t, pose)) return;
+		estimatedText.write(t, mrpt::poses::CPose2D(pose));
+		runner.add({mrpt::poses::CPose2D(pose), sw.obs});
 	});
 	runner.flush();
+	estimatedText.close();
 	result.mapTables = map->mapTables();
 	result.mapMatches = sameTables(result.mapTables, slam.bestMap().mapTables());
 	if (!result.mapMatches && !o.quiet)

@@ -22,6 +22,12 @@ Se2Alignment Se2Alignment::fit(const std::vector<Eigen::Vector2d>& from, const s
 		dot += f.dot(g);
 		cross += f.x() * g.y() - f.y() * g.x();
 	}
+	return fromMoments(mf, mt, dot, cross);
+}
+
+Se2Alignment Se2Alignment::fromMoments(
+	const Eigen::Vector2d& mf, const Eigen::Vector2d& mt, double dot, double cross)
+{
 	Se2Alignment a;
 	a.yaw = (dot == 0 && cross == 0) ? 0 : std::atan2(cross, dot);
 	a.t = mt - Eigen::Vector2d(std::cos(a.yaw) * mf.x() - std::sin(a.yaw) * mf.y(), std::sin(a.yaw) * mf.x() + std::cos(a.yaw) * mf.y());

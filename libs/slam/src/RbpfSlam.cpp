@@ -83,7 +83,7 @@ void RbpfSlam::resample()
 	m_resamplePending = false;
 }
 
-void RbpfSlam::step(const obs::RawlogReader::Sweep& sweep)
+const RbpfSlam::TStep& RbpfSlam::step(const obs::RawlogReader::Sweep& sweep)
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	if (!m_lastOdometry)
@@ -123,12 +123,38 @@ void RbpfSlam::step(const obs::RawlogReader::Sweep& sweep)
 		m_paths.extend(i, latest(d));
 		d.robotPath.erase(d.robotPath.begin(), d.robotPath.end() - 1);  // the filter needs the latest pose only
 	}
-	TStep s;
-	s.ess = m_pdf.ESS();
-	s.resampled = m_resamplePending = s.ess < m_params.resample_ess;
-	s.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-	m_steps.push_back(s);
+	m_last.ess = m_pdf.ESS();
+	m_last.resampled = m_resamplePending = m_last.ess < m_params.resample_ess;
+	m_last.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+	m_stepCount++;
+	return m_last;
 }
+
+const RbpfSlam::TStep& RbpfSlam::lastStep() const
+{
+	if (!m_stepCount) throw core::Error("RBPF: no sweep processed yet");
+	return m_last;
+}
+
+size_t RbpfSlam::settle(const std::function<void(const mrpt::poses::CPose2D&)>& sink)
+{
+	if (!m_stepCount) return 0;
+	if (m_paths.nodes() > m_pathLimit)
+		m_paths.mergeOlderThan(bestParticle(), std::max<size_t>(1, m_pathLimit / (4 * m_pdf.particlesCount())));
+	else if (m_paths.nodes() < m_settleAt)
+		return 0;
+	// The first pose of the tree is the start, not a sweep's: not handed over.
+	const size_t before = settledSweeps();
+	bool start = m_paths.settled() == 0;
+	m_paths.settle([&](const mrpt::math::TPose2D& p) {
+		if (!start) sink(mrpt::poses::CPose2D(p));
+		start = false;
+	});
+	m_settleAt = 2 * m_paths.nodes() + 1024;
+	return settledSweeps() - before;
+}
+
+size_t RbpfSlam::settledSweeps() const { return m_paths.settled() > 0 ? m_paths.settled() - 1 : 0; }
 
 size_t RbpfSlam::bestParticle() const
 {
@@ -141,19 +167,20 @@ size_t RbpfSlam::bestParticle() const
 std::vector<mrpt::poses::CPose2D> RbpfSlam::bestPath() const
 {
 	const auto path = m_paths.path(bestParticle());
-	// The path starts with the initial pose, then one pose per step.
-	if (path.size() != m_steps.size() + 1)
+	// The tree starts with the initial pose, then one pose per step; settle() takes the oldest.
+	const size_t skip = m_paths.settled() == 0 ? 1 : 0;
+	if (settledSweeps() + path.size() - skip != m_stepCount)
 		throw core::Error(
 			"RBPF: the best particle's path has " + std::to_string(path.size()) + " poses for " +
-			std::to_string(m_steps.size()) + " sweeps");
+			std::to_string(m_stepCount - settledSweeps()) + " sweeps");
 	std::vector<mrpt::poses::CPose2D> out;
-	for (size_t i = 1; i < path.size(); i++) out.emplace_back(path[i]);
+	for (size_t i = skip; i < path.size(); i++) out.emplace_back(path[i]);
 	return out;
 }
 
 const maps::CHierarchicalObjectMap& RbpfSlam::bestMap() const
 {
-	if (m_steps.empty()) throw core::Error("RBPF: no sweep processed yet");
+	if (!m_stepCount) throw core::Error("RBPF: no sweep processed yet");
 	const auto map = m_pdf.m_particles[bestParticle()].d->mapTillNow.mapByClass<maps::CHierarchicalObjectMap>();
 	if (!map) throw core::Error("RBPF: the particles hold no hierarchicalObjectMap");
 	return *map;

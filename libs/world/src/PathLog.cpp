@@ -10,16 +10,27 @@ namespace whiskermap::world
 {
 std::vector<PathLog::Entry> PathLog::read(const std::string& path)
 {
-	if (!std::filesystem::is_regular_file(path)) throw core::Error(path + ": no such file");
-	std::ifstream f(path);
-	if (!f) throw core::Error(path + ": cannot open path file");
+	Reader r(path);
 	std::vector<Entry> out;
-	std::string text;
-	for (int lineNo = 1; std::getline(f, text); lineNo++)
+	for (Entry e; r.next(e);) out.push_back(e);
+	return out;
+}
+
+PathLog::Reader::Reader(const std::string& path) : m_path(path)
+{
+	if (!std::filesystem::is_regular_file(path)) throw core::Error(path + ": no such file");
+	m_in.open(path);
+	if (!m_in) throw core::Error(path + ": cannot open path file");
+}
+
+bool PathLog::Reader::next(Entry& e)
+{
+	for (std::string text; std::getline(m_in, text);)
 	{
+		m_line++;
 		const auto b = text.find_first_not_of(" \t\r");
 		if (b == std::string::npos || text[b] == '%' || text[b] == '#') continue;
-		const std::string where = path + ": line " + std::to_string(lineNo) + ": ";
+		const std::string where = m_path + ": line " + std::to_string(m_line) + ": ";
 		std::istringstream s(text);
 		double t, x, y, yaw;
 		std::string extra;
@@ -27,13 +38,15 @@ std::vector<PathLog::Entry> PathLog::read(const std::string& path)
 			throw core::Error(where + "expected 'timestamp x y yaw', got '" + text + "'");
 		if (!std::isfinite(t) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw))
 			throw core::Error(where + "a value is not finite in '" + text + "'");
-		if (!out.empty() && t < out.back().t)
+		if (m_count > 0 && t < m_lastT)
 			throw core::Error(where + "timestamp " + std::to_string(t) + " goes backwards");
-		out.push_back({t, {x, y, yaw}, lineNo});
+		e = {t, {x, y, yaw}, m_line};
+		m_lastT = t, m_count++;
+		return true;
 	}
-	if (f.bad()) throw core::Error(path + ": read failed");
-	if (out.empty()) throw core::Error(path + ": path file holds no poses");
-	return out;
+	if (m_in.bad()) throw core::Error(m_path + ": read failed");
+	if (m_count == 0) throw core::Error(m_path + ": path file holds no poses");
+	return false;
 }
 
 std::string PathLog::header(const std::string& title)

@@ -1,35 +1,41 @@
 #pragma once
 #include <whiskermap/cli/MapOutputs.h>
 #include <whiskermap/cli/OutputDir.h>
-#include <whiskermap/slam/RbpfSlam.h>
-#include <whiskermap/world/PathLog.h>
+#include <whiskermap/cli/StepFigures.h>
+#include <whiskermap/slam/TSlamParams.h>
+#include <whiskermap/world/Table.h>
 
-#include <optional>
 #include <string>
 #include <vector>
 
 namespace whiskermap::cli
 {
-/** whisker-slam's own outputs (doc/slam.md): estimated_path.txt and odometry_path.txt (the
- *  ground-truth path columns, one line per sweep), paths.png (estimated, odometry and true
- *  paths over the map) and summary.json (particles, time per step, effective sample size
- *  over time, trajectory figures when the truth is known). The best particle's map goes
- *  through MapOutputs, whisker-map's writer. */
+/** whisker-slam's own outputs (doc/slam.md) besides the two path files the app streams
+ *  (estimated_path.txt and odometry_path.txt, the ground-truth path columns, one line per
+ *  sweep): paths.png (estimated, odometry and true paths over the map) and summary.json
+ *  (particles, time per step, effective sample size over time, trajectory figures when the
+ *  truth is known). Both read the path files back as streams, so memory does not grow with
+ *  the log. The best particle's map goes through MapOutputs, whisker-map's writer. */
 struct SlamOutputs
 {
+	static constexpr const char* ESTIMATED = "estimated_path.txt";
+	static constexpr const char* ESTIMATED_TITLE = "whisker-slam: the best particle's path, one pose per sweep";
+	static constexpr const char* ODOMETRY = "odometry_path.txt";
+	static constexpr const char* ODOMETRY_TITLE = "whisker-slam: the odometry of each sweep, as read from the rawlog";
+
 	struct TRun
 	{
-		std::string input, config, mapConfig, truthPath;
+		std::string input, config, mapConfig, truthPath;  ///< truthPath empty: no truth
 		const slam::TSlamParams* params = nullptr;
-		const slam::RbpfSlam* slam = nullptr;
-		std::vector<world::PathLog::Entry> odometry, estimated;  ///< one per sweep
-		std::optional<std::vector<world::PathLog::Entry>> truth;  ///< same length, if known
+		size_t sweeps = 0;  ///< lines in each path file (the truth file's first `sweeps` are scored)
+		std::string estimatedFile, odometryFile;  ///< the path files, written (staged)
+		StepFigures steps;
 		std::vector<world::Table> mapTables;  ///< the best particle's map
 		bool mapMatches = false;  ///< the rebuilt map equals the best particle's map
 		double wallSeconds = 0;
 	};
 
-	/** Writes the files into `out`; returns a one-line result for the terminal. */
+	/** Writes paths.png and summary.json into `out`; returns a one-line result for the terminal. */
 	static std::string write(OutputDir& out, const TRun& run, const MapOutputs::TSettings& picture);
 };
 }  // namespace whiskermap::cli

@@ -17,6 +17,10 @@ struct Se2Alignment
 	/** Minimises sum_i |R(yaw) from_i + t - to_i|^2. Equal, non-empty sizes (throws
 	 *  core::Error otherwise); with one point, or all points equal, the yaw is 0. */
 	static Se2Alignment fit(const std::vector<Eigen::Vector2d>& from, const std::vector<Eigen::Vector2d>& to);
+	/** The same fit from the sets' means and their centred sums sum f'.g' (`dot`) and
+	 *  sum f' x g' (`cross`): what fit() computes, for points streamed in two passes. */
+	static Se2Alignment fromMoments(
+		const Eigen::Vector2d& meanFrom, const Eigen::Vector2d& meanTo, double dot, double cross);
 
 	Eigen::Vector2d apply(const Eigen::Vector2d& p) const;
 	/** A pose moved as a whole: position mapped, heading turned by yaw. */

@@ -30,5 +30,17 @@ struct TrajectoryEvaluation
 		const std::vector<world::PathLog::Entry>& estimated, const std::vector<world::PathLog::Entry>& truth,
 		const EvalOptions& opts, const std::string& estLabel = "estimated path",
 		const std::string& truthLabel = "true path");
+
+	/** The same figures for two path files (world::PathLog), streamed: each file is read
+	 *  four times (once to check and count, three passes of the figures), so memory does
+	 *  not grow with the paths (only RPE's window: the poses of the last rpe_segment_m of
+	 *  true travel, at most RPE_WINDOW). `limit` > 0 scores the first `limit` poses of each
+	 *  file (both must hold that many); 0 scores them whole (equal counts). */
+	static TrajectoryEvaluation compute(
+		const std::string& estimatedFile, const std::string& truthFile, const EvalOptions& opts, size_t limit = 0);
+
+	/** RPE's window bound: a segment whose start lies more poses back is not scored (a
+	 *  robot standing still for millions of sweeps). */
+	static constexpr size_t RPE_WINDOW = size_t(1) << 22;
 };
 }  // namespace whiskermap::eval

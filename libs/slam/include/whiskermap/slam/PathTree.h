@@ -2,6 +2,7 @@
 #include <mrpt/math/TPose2D.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace whiskermap::slam
@@ -14,8 +15,8 @@ namespace whiskermap::slam
  *  resampling copies them; here each pose is a node that points at the pose before it and
  *  counts the nodes and particles that point at it, and a node nobody points at is freed at
  *  once. The nodes alive are the distinct lineages back to the particles' common ancestor,
- *  then that ancestor's single path: about one pose per step plus particles x the lineages'
- *  depth, whatever the run's length. Nodes live in one vector with a free list; freeing
+ *  then that ancestor's single path, which settle() hands over and frees: particles x the
+ *  lineages' depth, whatever the run's length. Nodes live in one vector with a free list; freeing
  *  walks up iteratively (no recursion however long the path). */
 class PathTree
 {
@@ -30,8 +31,22 @@ class PathTree
 	 *  CParticleFilterCapable::performSubstitution copies particles). Any count of parents. */
 	void resample(const std::vector<size_t>& parents);
 
-	/** Particle `i`'s path, from the start to its latest pose. */
+	/** Particle `i`'s path, from the start (or the first pose not yet settled) to its
+	 *  latest pose. */
 	std::vector<mrpt::math::TPose2D> path(size_t i) const;
+
+	/** Hands `sink` the poses every particle's path holds before the particles' latest
+	 *  common ancestor (the settled trunk: no resampling can change it), oldest first, and
+	 *  frees them; path() then starts at that ancestor. Costs one walk up particle 0's path.
+	 *  Returns how many poses it handed over. */
+	size_t settle(const std::function<void(const mrpt::math::TPose2D&)>& sink);
+	/** Every particle's poses more than `lag` steps before its latest become particle `i`'s
+	 *  (the particles' paths must be equally long): the paths then meet `lag` + 1 steps back,
+	 *  and what only other particles held there is freed. A fixed-lag cut for filters whose
+	 *  lineages do not meet by resampling. */
+	void mergeOlderThan(size_t i, size_t lag);
+	/** Poses handed over by settle() since reset(). */
+	size_t settled() const { return m_settled; }
 
 	size_t particles() const { return m_leaf.size(); }
 	/** Nodes alive: the memory the paths take, in poses. */
@@ -52,5 +67,6 @@ class PathTree
 	std::vector<Node> m_nodes;
 	std::vector<uint32_t> m_free;
 	std::vector<uint32_t> m_leaf;  ///< each particle's latest pose
+	size_t m_settled = 0;
 };
 }  // namespace whiskermap::slam

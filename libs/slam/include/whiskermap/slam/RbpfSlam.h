@@ -7,6 +7,7 @@
 #include <whiskermap/slam/PathTree.h>
 #include <whiskermap/slam/TSlamParams.h>
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -48,16 +49,31 @@ class RbpfSlam
 
 	RbpfSlam(const TSlamParams& params, const mrpt::maps::TSetOfMetricMapInitializers& maps);
 
-	/** One filter step on a sweep. */
-	void step(const obs::RawlogReader::Sweep& sweep);
+	/** One filter step on a sweep; returns its figures. */
+	const TStep& step(const obs::RawlogReader::Sweep& sweep);
 	/** Resamples the particles now (step() does it before a sweep when the ESS after the
 	 *  previous one fell below resample_ess): MRPT's resampling method, then equal weights.
 	 *  A parent drawn more than once is copied by cloning its maps (copy constructors), not
 	 *  by MRPT's serializing CMultiMetricMap copy. */
 	void resample();
 
-	const std::vector<TStep>& steps() const { return m_steps; }
-	/** The path of the particle with the highest weight: one pose per sweep so far. */
+	size_t stepCount() const { return m_stepCount; }
+	/** The latest step's figures (throws before the first step). */
+	const TStep& lastStep() const;
+	/** Hands `sink` the path's poses that every particle agrees on (their common ancestors'
+	 *  poses, which no resampling can change), oldest first, one per sweep, and forgets them.
+	 *  Cheap to call after every step: it walks the paths only when they have doubled since
+	 *  it last did (amortised constant time). Returns the count handed over. */
+	size_t settle(const std::function<void(const mrpt::poses::CPose2D&)>& sink);
+	/** The most path poses kept (default 2^21, 64 MB): when the lineages have not met by
+	 *  resampling and settle() finds more alive, every particle's past beyond
+	 *  limit / (4 x particles) sweeps becomes the best particle's (PathTree::mergeOlderThan),
+	 *  so that memory stays bounded even with resample_ess = 0. */
+	void setPathLimit(size_t poses) { m_pathLimit = poses; }
+	/** Sweeps whose poses settle() has handed over. */
+	size_t settledSweeps() const;
+	/** The path of the particle with the highest weight: one pose per sweep after those
+	 *  settled (all of them when settle() is never called). */
 	std::vector<mrpt::poses::CPose2D> bestPath() const;
 	/** That particle's map. */
 	const maps::CHierarchicalObjectMap& bestMap() const;
@@ -73,7 +89,10 @@ class RbpfSlam
 	mrpt::maps::CMultiMetricMapPDF m_pdf;
 	PathTree m_paths;
 	std::optional<mrpt::poses::CPose2D> m_lastOdometry;
-	std::vector<TStep> m_steps;
+	TStep m_last;
+	size_t m_stepCount = 0;
+	size_t m_settleAt = 0;  ///< settle() walks the paths when they hold this many nodes
+	size_t m_pathLimit = size_t(1) << 21;
 	bool m_resamplePending = false;
 };
 }  // namespace whiskermap::slam

@@ -27,6 +27,25 @@ struct PathLog
 	 *  backwards; at least one pose. Throws core::Error "FILE: line L: problem". */
 	static std::vector<Entry> read(const std::string& path);
 
+	/** Reads a path file one pose at a time, with read()'s checks (memory: one line). */
+	class Reader
+	{
+	   public:
+		explicit Reader(const std::string& path);  ///< throws core::Error when it cannot be opened
+		/** The next pose; false at the end of the file (after at least one pose: a file with
+		 *  none throws). Throws core::Error "FILE: line L: problem". */
+		bool next(Entry& e);
+		size_t count() const { return m_count; }  ///< poses read so far
+		const std::string& path() const { return m_path; }
+
+	   private:
+		std::string m_path;
+		std::ifstream m_in;
+		int m_line = 0;
+		size_t m_count = 0;
+		double m_lastT = 0;
+	};
+
 	/** The two header lines: `% <title>` and the column line. */
 	static std::string header(const std::string& title);
 	/** One line, "%.6f %.9f %.9f %.9f\n" (microseconds, nanometres, nanoradians). */
