@@ -4,7 +4,7 @@
 # Usage: scripts/fuzz.sh [--seconds S | --runs N] [TARGET...]
 #   --seconds S  fuzz each target for S seconds (the test command's short form uses 30)
 #   --runs N     fuzz each target for N executions (the long form: 10000000)
-#   TARGET       rawlog observation world_ini robot_ini noise_ini map_ini path_file table_csv
+#   TARGET       rawlog observation world_ini robot_ini noise_ini map_ini path_file path_log table_csv
 #                contact_log odometry_ini
 #                (default: all)
 # Each target starts from its seed corpus fuzz/corpus/<target>/ plus what earlier runs
@@ -14,7 +14,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 limit=(-max_total_time=30)
-all=(rawlog observation world_ini robot_ini noise_ini map_ini path_file table_csv contact_log odometry_ini)
+all=(rawlog observation world_ini robot_ini noise_ini map_ini path_file path_log table_csv contact_log odometry_ini)
 targets=()
 while [[ $# -gt 0 ]]; do
   case $1 in

@@ -72,5 +72,23 @@ TEST_F(PathLogTest, BadFilesNameTheLine)
 	expectError("1 0 nan 0\n", "line 1: ");
 	expectError("1 0 0 0\n\n0.5 0 0 0\n", "line 3: timestamp 0.500000 goes backwards");
 	expectError("% nothing\n\n", "path file holds no poses");
+	expectError(std::string("1 0 0 0\n2 0 0 0\0 junk\n", 22), "line 2: holds a control byte 0 (NUL)");
+	expectError("1 0 0 0\n" + std::string(5000, '7') + "\n", "line 2: longer than 4096 bytes");
 	EXPECT_THROW(world::PathLog::read(path("nowhere.txt")), core::Error);
+}
+
+TEST_F(PathLogTest, TheReaderStreamsWhatReadReturns)
+{
+	std::ofstream(path("p.txt")) << "% a path\r\n1 0.5 -1 0.25\r\n\n# note\n2 1.5 -2 0.5\n";
+	world::PathLog::Reader r(path("p.txt"));
+	world::PathLog::Entry e;
+	ASSERT_TRUE(r.next(e));
+	EXPECT_EQ(e.line, 2);
+	EXPECT_EQ(e.pose.y, -1);
+	ASSERT_TRUE(r.next(e));
+	EXPECT_EQ(e.line, 5);
+	EXPECT_EQ(e.pose.phi, 0.5);
+	EXPECT_FALSE(r.next(e));
+	EXPECT_EQ(r.count(), 2u);
+	EXPECT_EQ(world::PathLog::read(path("p.txt")).size(), 2u);
 }

@@ -16,21 +16,15 @@ std::vector<PathLog::Entry> PathLog::read(const std::string& path)
 	return out;
 }
 
-PathLog::Reader::Reader(const std::string& path) : m_path(path)
-{
-	if (!std::filesystem::is_regular_file(path)) throw core::Error(path + ": no such file");
-	m_in.open(path);
-	if (!m_in) throw core::Error(path + ": cannot open path file");
-}
+PathLog::Reader::Reader(const std::string& path) : m_path(path), m_in(path, "file") {}
 
 bool PathLog::Reader::next(Entry& e)
 {
-	for (std::string text; std::getline(m_in, text);)
+	for (std::string text; m_in.next(text);)
 	{
-		m_line++;
-		const auto b = text.find_first_not_of(" \t\r");
+		const auto b = text.find_first_not_of(" \t");
 		if (b == std::string::npos || text[b] == '%' || text[b] == '#') continue;
-		const std::string where = m_path + ": line " + std::to_string(m_line) + ": ";
+		const std::string where = m_in.where();
 		std::istringstream s(text);
 		double t, x, y, yaw;
 		std::string extra;
@@ -40,11 +34,10 @@ bool PathLog::Reader::next(Entry& e)
 			throw core::Error(where + "a value is not finite in '" + text + "'");
 		if (m_count > 0 && t < m_lastT)
 			throw core::Error(where + "timestamp " + std::to_string(t) + " goes backwards");
-		e = {t, {x, y, yaw}, m_line};
+		e = {t, {x, y, yaw}, static_cast<int>(m_in.lineNo())};
 		m_lastT = t, m_count++;
 		return true;
 	}
-	if (m_in.bad()) throw core::Error(m_path + ": read failed");
 	if (m_count == 0) throw core::Error(m_path + ": path file holds no poses");
 	return false;
 }

@@ -1,6 +1,7 @@
 #pragma once
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/poses/CPose2D.h>
+#include <whiskermap/core/LineReader.h>
 
 #include <fstream>
 #include <string>
@@ -24,7 +25,8 @@ struct PathLog
 
 	/** Reads a path file strictly: blank lines and lines starting with `%` or `#` are
 	 *  skipped; every other line holds exactly four finite numbers; timestamps never go
-	 *  backwards; at least one pose. Throws core::Error "FILE: line L: problem". */
+	 *  backwards; at least one pose; no line over 4,096 bytes or holding a control byte
+	 *  (core::LineReader). Throws core::Error "FILE: line L: problem". */
 	static std::vector<Entry> read(const std::string& path);
 
 	/** Reads a path file one pose at a time, with read()'s checks (memory: one line). */
@@ -40,8 +42,7 @@ struct PathLog
 
 	   private:
 		std::string m_path;
-		std::ifstream m_in;
-		int m_line = 0;
+		core::LineReader m_in;
 		size_t m_count = 0;
 		double m_lastT = 0;
 	};
