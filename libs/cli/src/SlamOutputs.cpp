@@ -85,6 +85,7 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 	j["resample_ess"] = p.resample_ess, j["resamplings"] = st.resamplings, j["ess_min"] = st.minEss;
 	j["ess_stride"] = st.ess.stride();
 	j["ess"] = std::move(ess);
+	j["path_poses_max"] = st.pathPosesMax;
 	j["map_tables"] = run.mapTables.size();
 	j["map_matches_best_particle"] = run.mapMatches;
 	if (scores)

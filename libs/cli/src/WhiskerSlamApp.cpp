@@ -129,8 +129,8 @@ int run(Options& o)
 		odometry.write(t, sw.robotPose);
 		times.push_back(t);
 		const auto& step = slam.step(sw);
-		result.steps.add(step.ms, step.ess, step.resampled);
 		slam.settle(settled);
+		result.steps.add(step.ms, step.ess, step.resampled, slam.paths().nodes());
 		k++;
 		if (bar && (k % 10 == 0 || k == n))
 			std::fprintf(stderr, "\rwhisker-slam: %zu/%zu sweeps, %u particles, ESS %.2f", k, n, params.particles,
