@@ -93,12 +93,9 @@ int run(Options& o)
 	result.sweeps = n;
 	if (!result.truthPath.empty())
 	{
-		world::PathLog::Reader truth(result.truthPath);
-		for (world::PathLog::Entry e; truth.count() < n && truth.next(e);)
-		{
-		}
-		if (truth.count() < n)
-			throw core::Error(result.truthPath + ": " + std::to_string(truth.count()) + " poses for " +
+		const size_t poses = world::PathLog::count(result.truthPath, n);
+		if (poses < n)
+			throw core::Error(result.truthPath + ": " + std::to_string(poses) + " poses for " +
 							  std::to_string(n) + " sweeps");
 	}
 	MapOutputs::TSettings settings;

@@ -49,7 +49,7 @@ class RpeWindow
    public:
 	explicit RpeWindow(double segment) : m_segment(segment) {}
 
-	void add(double s, const Entry& est, const Entry& truth, TrajectoryEvaluation& r)
+	void add(double s, const Entry& est, const Entry& truth)
 	{
 		// Every open start this pose is the first to close, oldest first (the order of i).
 		while (!m_open.empty() && s - m_open.front().s >= m_segment)
@@ -59,7 +59,7 @@ class RpeWindow
 			const auto E = (pose(truth.pose) - pose(i.truth)) - (pose(est.pose) - pose(i.est));
 			m_trans += std::hypot(E.x(), E.y()) / d;
 			m_rot += std::abs(core::wrapToPi(E.phi())) / d;
-			r.rpe_segments++;
+			m_segments++;
 			m_open.pop_front();
 		}
 		if (m_open.size() == TrajectoryEvaluation::RPE_WINDOW) m_open.pop_front();
@@ -68,9 +68,10 @@ class RpeWindow
 
 	void finish(TrajectoryEvaluation& r) const
 	{
-		if (!r.rpe_segments) return;
-		r.rpe_trans = m_trans / r.rpe_segments;
-		r.rpe_rot_deg_per_m = core::rad2deg(m_rot / r.rpe_segments);
+		r.rpe_segments = m_segments;
+		if (!m_segments) return;
+		r.rpe_trans = m_trans / m_segments;
+		r.rpe_rot_deg_per_m = core::rad2deg(m_rot / m_segments);
 	}
 
    private:
@@ -80,6 +81,7 @@ class RpeWindow
 		mrpt::math::TPose2D est, truth;
 	};
 	double m_segment, m_trans = 0, m_rot = 0;
+	size_t m_segments = 0;
 	std::deque<Start> m_open;
 };
 
@@ -104,7 +106,7 @@ TrajectoryEvaluation evaluate(const Pairs& pairs, const EvalOptions& opts)
 		sumEst += pe, sumTruth += pt;
 		r.final_error_m = e;
 		r.final_yaw_err_deg = core::rad2deg(std::abs(yaw));
-		rpe.add(s, est, truth, r);
+		rpe.add(s, est, truth);
 	});
 	const double n = double(r.poses);
 	r.length_m = s;
@@ -155,14 +157,7 @@ TrajectoryEvaluation TrajectoryEvaluation::compute(
 	opts.validate();
 	const size_t all = limit ? limit : SIZE_MAX;
 	// Every line of both files checked, and the counts compared, before any figure.
-	const auto count = [&](const std::string& file) {
-		world::PathLog::Reader r(file);
-		for (Entry e; r.count() < all && r.next(e);)
-		{
-		}
-		return r.count();
-	};
-	const size_t nEst = count(estFile), nTruth = count(truthFile);
+	const size_t nEst = world::PathLog::count(estFile, all), nTruth = world::PathLog::count(truthFile, all);
 	if (limit && std::min(nEst, nTruth) < limit)
 		throw core::Error(
 			(nEst < limit ? estFile : truthFile) + ": holds " + std::to_string(std::min(nEst, nTruth)) +

@@ -16,6 +16,15 @@ std::vector<PathLog::Entry> PathLog::read(const std::string& path)
 	return out;
 }
 
+size_t PathLog::count(const std::string& path, size_t limit)
+{
+	Reader r(path);
+	for (Entry e; r.count() < limit && r.next(e);)
+	{
+	}
+	return r.count();
+}
+
 PathLog::Reader::Reader(const std::string& path) : m_path(path), m_in(path, "file") {}
 
 bool PathLog::Reader::next(Entry& e)

@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <string>
+#include <cstdint>
 #include <vector>
 
 namespace whiskermap::world
@@ -29,6 +30,10 @@ struct PathLog
 	 *  (core::LineReader). Throws core::Error "FILE: line L: problem". */
 	static std::vector<Entry> read(const std::string& path);
 
+	/** Checks the first `limit` poses of a path file (every line up to them) and returns how
+	 *  many it holds, at most `limit`. */
+	static size_t count(const std::string& path, size_t limit = SIZE_MAX);
+
 	/** Reads a path file one pose at a time, with read()'s checks (memory: one line). */
 	class Reader
 	{
@@ -38,7 +43,6 @@ struct PathLog
 		 *  none throws). Throws core::Error "FILE: line L: problem". */
 		bool next(Entry& e);
 		size_t count() const { return m_count; }  ///< poses read so far
-		const std::string& path() const { return m_path; }
 
 	   private:
 		std::string m_path;
