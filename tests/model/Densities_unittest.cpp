@@ -181,6 +181,41 @@ TEST(Densities, ShapeletGivenLegWithShaftNoiseByHand)
 	EXPECT_NEAR(contactVariance(s, 1, 0, p), 1e-4, 1e-15);
 }
 
+// Where a class's leg width is inferred (eq. 26), eq. 7 carries its normaliser along the face:
+// a contact's position along a face of length w has density 1 / (w + sqrt(pi) sigma_r), taken
+// relative to the model's leg_width. Without it a wider leg explains contacts along its faces
+// for free (the integral below grows with w) and inferred leg widths come out too wide.
+TEST(Densities, ShapeletGivenLegNormalisedAlongTheFaceWhereLegWidthsVary)
+{
+	ModelParams p = handParams();
+	p.leg_width = 0.05;
+	const Leg wide{0, 0, 0, 0.1, 0.1, 0.5, NONE, -1};
+	const whiskermap::obs::Shapelet onFace{0.05, 0.0, 0.0, 0.5, 0};
+	EXPECT_NEAR(logShapeletGivenLeg(onFace, wide, p), 3.0, 1e-9);  // no class varies: the paper's
+	ObjectClass cls;
+	cls.length = 1.0, cls.width = 0.6, cls.leg_width = 0.05, cls.texture = 0.5, cls.prior = 1;
+	cls.texture_sigma = 0.1;
+	p.classes = {cls};
+	EXPECT_NEAR(logShapeletGivenLeg(onFace, wide, p), 3.0, 1e-9);  // only textures vary: the paper's
+	p.classes[0].leg_width_sigma = 0.01;
+	const double end = std::sqrt(M_PI) * 0.01;
+	EXPECT_NEAR(logShapeletGivenLeg(onFace, wide, p), 3.0 - std::log((0.1 + end) / (0.05 + end)), 1e-9);
+	EXPECT_NEAR(alongFaceNormaliser(0.05, 1e-4, p), 0.0, 1e-15);
+	// The density integrates along the face line to the same for every width.
+	const auto alongFace = [&](double w)
+	{
+		const Leg l{0, 0, 0, w, w, 0.5, NONE, -1};
+		double sum = 0;
+		for (double y = -0.3; y <= 0.3; y += 1e-5)
+			sum += std::exp(logShapeletGivenLeg({w / 2, y, 0.0, 0.5, 0}, l, p)) * 1e-5;
+		return sum;
+	};
+	const double narrow = alongFace(0.03), nominal = alongFace(0.05), broad = alongFace(0.12);
+	EXPECT_NEAR(narrow / nominal, 1.0, 1e-4);
+	EXPECT_NEAR(broad / nominal, 1.0, 1e-4);
+	EXPECT_NEAR(nominal, std::exp(3.0) * (0.05 + end), 1e-4 * nominal);
+}
+
 // Object classes (issue 11): eq. 4 with the class prior, the corners (eqs. 5-6) and the
 // footprint (eq. 16) at the class's size, eq. 6's leg width against the class's. Hand values.
 TEST(Densities, TheClassSetsPriorCornersFootprintAndLegWidth)

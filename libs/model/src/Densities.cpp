@@ -119,6 +119,15 @@ double shaftVariance(const obs::Shapelet& s, double ux, double uy, const ModelPa
 	return sq(p.sigma_r * (ux * s.shaft_x + uy * s.shaft_y)) + sq(p.sigma_across);  // shaft noise
 }
 
+double alongFaceNormaliser(double faceLength, double variance, const ModelParams& p)
+{
+	// The excess kernel exp(-e^2 / v) integrates to sqrt(pi v) over both ends: a contact's
+	// position along a face of length w has density 1 / (w + sqrt(pi v)). Relative to the
+	// model's leg_width (0 there): only its dependence on w.
+	const double end = std::sqrt(M_PI * variance);
+	return std::log((faceLength + end) / (p.leg_width + end));  // eq. 7, along the face
+}
+
 double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelParams& p)
 {
 	// eq. 7 with the face that explains the contact best: distance to that face (a segment)
@@ -129,13 +138,14 @@ double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelPara
 	const double lx = c * dx + sn * dy, ly = -sn * dx + c * dy, hx = l.wx / 2, hy = l.wy / 2;
 	const double ex = std::max(std::abs(lx) - hx, 0.0), ey = std::max(std::abs(ly) - hy, 0.0);
 	double cost[4];  // eq. 7's distance term per face
+	double vx = sq(p.sigma_r), vy = vx;  // variances along the leg's x and y axes
 	if (p.shaft_noise && s.hasShaft())
 	{
 		// Variances along the leg's x and y axes (the shaft in the leg frame): each face's
 		// distance across it, and its excess past the face's ends along it.
 		// The across-face distance is a 1-D Gaussian: its density is sigma_r / sigma_across-face
 		// times the paper's (the log of that ratio is a gain, nx for faces 0, 2 and ny for 1, 3).
-		const double vx = contactVariance(s, c, sn, p), vy = contactVariance(s, -sn, c, p);
+		vx = contactVariance(s, c, sn, p), vy = contactVariance(s, -sn, c, p);
 		const double nx = 0.5 * std::log(sq(p.sigma_r) / vx), ny = 0.5 * std::log(sq(p.sigma_r) / vy);
 		cost[0] = sq(lx - hx) / vx + sq(ey) / vy - nx, cost[1] = sq(ly - hy) / vy + sq(ex) / vx - ny;
 		cost[2] = sq(lx + hx) / vx + sq(ey) / vy - nx, cost[3] = sq(ly + hy) / vy + sq(ex) / vx - ny;
@@ -144,6 +154,13 @@ double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelPara
 	{
 		const double d2[4] = {sq(lx - hx) + sq(ey), sq(ly - hy) + sq(ex), sq(lx + hx) + sq(ey), sq(ly + hy) + sq(ex)};
 		for (int k = 0; k < 4; k++) cost[k] = d2[k] / sq(p.sigma_r);
+	}
+	if (p.legWidthsVary())
+	{
+		// eq. 7's normaliser along the face, where the leg's width is inferred (eq. 26): faces 0, 2
+		// run along y (length wy, variance vy), faces 1, 3 along x.
+		const double gy = alongFaceNormaliser(l.wy, vy, p), gx = alongFaceNormaliser(l.wx, vx, p);
+		cost[0] += gy, cost[2] += gy, cost[1] += gx, cost[3] += gx;
 	}
 	double a = core::wrapToPi(s.normal - l.theta);  // normal against face 0's
 	double best = std::numeric_limits<double>::infinity();

@@ -59,11 +59,17 @@ double contactVariance(const obs::Shapelet& s, double ux, double uy, const Model
  *  sigma_across^2, or sigma_r^2 for a contact without a known shaft. */
 double shaftVariance(const obs::Shapelet& s, double ux, double uy, const ModelParams& p);
 
+/** log((w + sqrt(pi v)) / (leg_width + sqrt(pi v))): minus the log of eq. 7's density of a
+ *  contact's position along a face of length w (excess variance v), relative to the model's
+ *  leg_width (doc/model.md, "Leg width and texture"). */
+double alongFaceNormaliser(double faceLength, double variance, const ModelParams& p);
+
 /** log p(S | L) = log alpha_S - Delta_LS (eq. 7). The leg's face that explains the contact
  *  best counts: r is the exact distance to that face (a segment of the perimeter) and the
  *  normal is compared with its outward normal (mod 360 deg). Away from the corners that is
  *  the nearest face; near a corner it keeps a contact whose position noise crossed the
- *  corner's bisector on the face its normal names (doc/model.md). */
+ *  corner's bisector on the face its normal names (doc/model.md). Where some class's leg
+ *  width is inferred (ModelParams::legWidthsVary), each face's cost adds its alongFaceNormaliser. */
 double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelParams& p);
 
 /** log p(S | W) = log alpha_S - Delta_WS (eq. 22): the wall's face that explains the contact

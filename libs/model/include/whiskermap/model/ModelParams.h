@@ -69,6 +69,9 @@ struct ModelParams
 	/** Whether some class lets its objects' leg width or texture differ from its nominal ones
 	 *  (a leg_width_sigma or texture_sigma > 0: eq. 26). */
 	bool legsVary() const;
+	/** Whether some class lets its objects' leg width differ from its nominal one (a
+	 *  leg_width_sigma > 0): eq. 7 then carries its normaliser along a face (alongFaceNormaliser). */
+	bool legWidthsVary() const;
 	/** Largest footprint diagonal and length over the classes (search radii, hash cells). */
 	double maxDiagonal() const;
 	double maxLength() const;
