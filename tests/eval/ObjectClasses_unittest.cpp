@@ -52,6 +52,7 @@ TEST(ObjectClasses, MatchWithinTheClassOnly)
 	EXPECT_NEAR(e.classes->length_err_m, (0.02 + 0) / 2, 1e-12);
 	EXPECT_NEAR(e.classes->width_err_m, (0.02 + 0) / 2, 1e-12);
 	EXPECT_NEAR(e.classes->leg_width_err_m, (0 + 0.01) / 2, 1e-12);
+	EXPECT_NEAR(e.classes->leg_width_bias_m, (0 + 0.01) / 2, 1e-12);  // the desk's legs 1 cm too wide
 	EXPECT_NEAR(e.classes->texture_err, (0 + 0.1) / 2, 1e-12);
 	// A chair 0.2 m off is outside its 0.127 m gate (a table's 0.25 m would take it).
 	EXPECT_EQ(MapEvaluation::compute({TRUTH[0]}, {object("chair", 0.2, 0, 0, 0.42, 0.42, 0.03)}, {}).matched, 0u);

@@ -83,6 +83,7 @@ Fields classFields(const ClassFigures& c)
 		{"length_err_m", num(c.length_err_m, 6)},
 		{"width_err_m", num(c.width_err_m, 6)},
 		{"leg_width_err_m", num(c.leg_width_err_m, 6)},
+		{"leg_width_bias_m", num(c.leg_width_bias_m, 6)},
 		{"texture_err", num(c.texture_err, 6)},
 	};
 }
@@ -239,10 +240,11 @@ std::string EvalReport::mapText() const
 		const auto& c = *map->classes;
 		std::snprintf(
 			buf, sizeof(buf),
-			"classes: %zu matched ignoring the class, class accuracy %s; dimension errors (m): length %s, width %s, leg %s; "
-			"texture error %s\n",
+			"classes: %zu matched ignoring the class, class accuracy %s; dimension errors (m): length %s, width %s, leg %s "
+			"(bias %s); texture error %s\n",
 			c.matched_any_class, num(c.class_accuracy, 3, "n/a").c_str(), num(c.length_err_m, 4, "n/a").c_str(),
 			num(c.width_err_m, 4, "n/a").c_str(), num(c.leg_width_err_m, 4, "n/a").c_str(),
+			num(c.leg_width_bias_m, 4, "n/a").c_str(),
 			num(c.texture_err, 3, "n/a").c_str());
 		s += buf;
 	}

@@ -75,7 +75,7 @@ ClassFigures classFigures(
 	for (size_t i = 0; i < truth.size(); i++)
 		if (match[i] >= 0) f.matched_any_class++, agree += estimated[match[i]].object_class == truth[i].object_class;
 	if (f.matched_any_class > 0) f.class_accuracy = double(agree) / f.matched_any_class;
-	double dl = 0, dw = 0, dlw = 0, dt = 0;
+	double dl = 0, dw = 0, dlw = 0, blw = 0, dt = 0;
 	size_t n = 0;
 	for (size_t i = 0; i < truth.size(); i++)
 	{
@@ -83,9 +83,12 @@ ClassFigures classFigures(
 		const auto& t = truth[i];
 		const auto e = orientedLike(estimated[truthMatch[i]], t);
 		dl += std::abs(e.length - t.length), dw += std::abs(e.width - t.width);
-		dlw += std::abs(e.leg_width - t.leg_width), dt += std::abs(e.texture - t.texture), n++;
+		dlw += std::abs(e.leg_width - t.leg_width), blw += e.leg_width - t.leg_width;
+		dt += std::abs(e.texture - t.texture), n++;
 	}
-	if (n > 0) f.length_err_m = dl / n, f.width_err_m = dw / n, f.leg_width_err_m = dlw / n, f.texture_err = dt / n;
+	if (n > 0)
+		f.length_err_m = dl / n, f.width_err_m = dw / n, f.leg_width_err_m = dlw / n, f.leg_width_bias_m = blw / n,
+		f.texture_err = dt / n;
 	return f;
 }
 }  // namespace

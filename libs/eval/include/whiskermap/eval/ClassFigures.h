@@ -14,6 +14,7 @@ struct ClassFigures
 	double length_err_m = NAN;  ///< mean |estimated - true| leg-centre spacing along x
 	double width_err_m = NAN;  ///< ... along y
 	double leg_width_err_m = NAN;  ///< ... of the leg side
+	double leg_width_bias_m = NAN;  ///< mean estimated - true leg side (signed: a bias shows)
 	double texture_err = NAN;  ///< ... of the leg texture
 };
 }  // namespace whiskermap::eval
