@@ -62,6 +62,8 @@ TEST_F(TSlamParamsTest, StrictKeysAndValues)
 	EXPECT_DOUBLE_EQ(p.motion.translation_noise, 0.10);
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nparticle = 3\n")), core::Error);
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nresample_ess = 1.5\n")), core::Error);
+	EXPECT_EQ(slam::TSlamParams::load(ini("[slam]\nproposal_samples = 12\n")).proposal_samples, 12u);
+	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nproposal_samples = 0\n")), core::Error);
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\n[other]\n")), core::Error);
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nodometry_model = bumpy\n")), core::Error);
 	EXPECT_THROW(slam::TSlamParams::load(path("missing.ini")), core::Error);

@@ -1,5 +1,4 @@
 #include <mrpt/bayes/CParticleFilterCapable.h>
-#include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -18,10 +17,8 @@ mrpt::bayes::CParticleFilter::TParticleFilterOptions filterOptions(const TSlamPa
 {
 	mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
 	o.sampleSize = p.particles;
-	o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
 	o.resamplingMethod = p.resampling;
 	o.adaptiveSampleSize = false;
-	o.BETA = 0;  // the filter never resamples by itself: step() does, after recording the ESS
 	return o;
 }
 
@@ -33,11 +30,9 @@ mrpt::math::TPose2D latest(const mrpt::maps::CRBPFParticleData& d)
 }  // namespace
 
 RbpfSlam::RbpfSlam(const TSlamParams& params, const mrpt::maps::TSetOfMetricMapInitializers& maps)
-	: m_params(params), m_pdf(filterOptions(params), maps, {})
+	: m_params(params), m_pdf(filterOptions(params), maps, {}), m_proposal(params.proposal_samples)
 {
 	mrpt::random::getRandomGenerator().randomize(params.seed);
-	m_filter.m_options = filterOptions(params);
-	m_filter.setVerbosityLevel(mrpt::system::LVL_ERROR);
 }
 
 void RbpfSlam::resample()
@@ -105,8 +100,6 @@ const RbpfSlam::TStep& RbpfSlam::step(const obs::RawlogReader::Sweep& sweep)
 	mrpt::obs::CActionRobotMovement2D move;
 	move.timestamp = sweep.obs->timestamp;
 	move.computeFromOdometry(mrpt::poses::CPose2D(accumulated), model);
-	mrpt::obs::CActionCollection actions;
-	actions.insert(move);
 	mrpt::obs::CSensoryFrame frame;
 	frame.insert(sweep.obs);
 
@@ -114,7 +107,7 @@ const RbpfSlam::TStep& RbpfSlam::step(const obs::RawlogReader::Sweep& sweep)
 	// weights after the last sweep stay as the filter left them, so the best particle at the
 	// end is the most probable one, not a pick among equal weights.
 	if (m_resamplePending) resample();
-	m_filter.executeOn(m_pdf, &actions, &frame);
+	m_proposal.apply(m_pdf, move, frame);
 	for (size_t i = 0; i < m_pdf.particlesCount(); i++)
 	{
 		auto& d = *m_pdf.m_particles[i].d;

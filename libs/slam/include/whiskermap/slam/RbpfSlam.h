@@ -5,6 +5,7 @@
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/obs/RawlogReader.h>
 #include <whiskermap/slam/PathTree.h>
+#include <whiskermap/slam/SampledProposal.h>
 #include <whiskermap/slam/TSlamParams.h>
 
 #include <functional>
@@ -14,13 +15,14 @@
 namespace whiskermap::slam
 {
 /** Tactile SLAM with MRPT's own Rao-Blackwellised particle filter: a CMultiMetricMapPDF
- *  whose particles each hold a CMultiMetricMap with a CHierarchicalObjectMap, run by MRPT's
- *  CParticleFilter (standard proposal: particles move by samples of the odometry increment's
- *  Gaussian, are weighted by the map's sweep likelihood, then every particle's map inserts
- *  the sweep at its pose).
+ *  whose particles each hold a CMultiMetricMap with a CHierarchicalObjectMap. Per sweep,
+ *  SampledProposal moves and weighs the particles (with one motion sample per particle,
+ *  MRPT's standard proposal, draw for draw, as CParticleFilter runs it: particles move by
+ *  samples of the odometry increment's Gaussian and are weighted by the map's sweep
+ *  likelihood), then every particle's map inserts the sweep at its pose.
  *
- *  Each step is what CMetricMapBuilderRBPF::processActionObservation does with
- *  debugForceInsertion and zero distance thresholds (the same action, the same draws, the
+ *  With one motion sample, each step is what CMetricMapBuilderRBPF::processActionObservation
+ *  does with debugForceInsertion and zero distance thresholds (the same action, the same draws, the
  *  same insertions), minus the builder's two stores that grow with the run: its CSimpleMap
  *  of every sensory frame with every particle's pose at it, and every particle's whole path
  *  (CRBPFParticleData::robotPath, copied at each resampling). Here a particle keeps only its
@@ -85,8 +87,8 @@ class RbpfSlam
 	size_t bestParticle() const;
 
 	TSlamParams m_params;
-	mrpt::bayes::CParticleFilter m_filter;
 	mrpt::maps::CMultiMetricMapPDF m_pdf;
+	SampledProposal m_proposal;
 	PathTree m_paths;
 	std::optional<mrpt::poses::CPose2D> m_lastOdometry;
 	TStep m_last;
