@@ -53,6 +53,7 @@ TEST(TSlamParams, ShippedConfigLoads)
 	EXPECT_TRUE(p.motion.matched_model);
 	EXPECT_DOUBLE_EQ(p.motion.translation_noise, 0.05);  // the default odometry preset
 	EXPECT_EQ(p.resampling, mrpt::bayes::CParticleFilter::prSystematic);
+	EXPECT_EQ(p.proposal_samples, 10u);
 }
 
 TEST_F(TSlamParamsTest, StrictKeysAndValues)

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# whisker-slam over many filter seeds on a shipped SLAM log (doc/slam.md, doc/benchmarks.md):
+# per seed the raw and aligned ATE, final error, map F1, median ms per step and resamplings,
+# then the median and worst over the seeds and how many beat the odometry alone.
+# Usage: scripts/bench-slam-seeds.sh [BUILD_DIR] [WORK_DIR]
+#   CONFIG=FILE.ini  the whisker-slam config (default config/whisker-slam.ini)
+#   LOG=paper_arena|random_yaw1   the datasets/slam/ log (obs layout; default paper_arena)
+#   SEEDS="1 ... 10"  filter seeds (default 1-10); JOBS=2 runs two at once
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$root/build}
+work=${2:-$root/out/bench-slam-seeds}
+config=${CONFIG:-$root/config/whisker-slam.ini}
+log=${LOG:-paper_arena}
+case "$log" in
+  paper_arena) world=$root/config/worlds/paper_arena.ini ;;
+  random_yaw1) world=$root/config/worlds/eval/random_yaw/seed1.ini ;;
+  *) echo "bench-slam-seeds: LOG must be paper_arena or random_yaw1, not '$log'" >&2; exit 1 ;;
+esac
+mkdir -p "$work"
+export build work config log world
+run() {
+  "$build/apps/whisker-slam/whisker-slam" -q -c "$config" -i "$root/datasets/slam/${log}_obs.rawlog" \
+    -o "$work/seed$1" --world "$world" --seed "$1"
+}
+export -f run
+export root
+printf '%s\n' ${SEEDS:-1 2 3 4 5 6 7 8 9 10} | xargs -P "${JOBS:-1}" -I{} bash -c 'run {}'
+python3 - "$work" ${SEEDS:-1 2 3 4 5 6 7 8 9 10} <<'PY'
+import json, statistics, sys
+work, seeds = sys.argv[1], sys.argv[2:]
+rows = []
+for s in seeds:
+    S = json.load(open(f"{work}/seed{s}/summary.json"))
+    M = json.load(open(f"{work}/seed{s}/metrics.json"))
+    e, o = S["estimated"]["trajectory"], S["odometry"]["trajectory"]
+    rows.append((e["ate_rmse_m"], e["aligned_rmse_m"], e["final_error_m"], M["f1"], S["time_per_step_ms"]["median"], S["resamplings"], o["ate_rmse_m"]))
+    print(f"seed {s}: ATE raw {e['ate_rmse_m']:.3f} m, aligned {e['aligned_rmse_m']:.3f} m, final {e['final_error_m']:.3f} m; "
+          f"map F1 {M['f1']:.2f}; {S['time_per_step_ms']['median']:.0f} ms per step (median); {S['resamplings']} resamplings")
+med = lambda k: statistics.median(r[k] for r in rows)
+print(f"median over {len(rows)} seeds: ATE raw {med(0):.3f} m (worst {max(r[0] for r in rows):.3f}), aligned {med(1):.3f} m, "
+      f"final {med(2):.3f} m, map F1 {med(3):.2f}, {med(4):.0f} ms per step; "
+      f"better than the odometry ({rows[0][6]:.3f} m) on {sum(r[0] < r[6] for r in rows)} of {len(rows)}")
+PY
