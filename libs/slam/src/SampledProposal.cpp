@@ -47,14 +47,15 @@ void SampledProposal::apply(
 			for (const auto& o : frame) logL[k] += map.computeObservationLikelihood(*o, x[k]);
 			if (std::isnan(logL[k])) throw core::Error("RBPF proposal: the sweep likelihood is NaN");
 		}
+		// Some sample must be possible (MRPT's standard proposal asserts a finite likelihood too).
+		const double top = *std::max_element(logL.begin(), logL.end());
+		if (!std::isfinite(top)) throw core::Error("RBPF proposal: the sweep likelihood is not finite");
 		unsigned pick = 0;
 		if (m_samples == 1)
 			particles[i].log_w += logL[0];
 		else
 		{
 			// eq. S1: x ~ L_k / sum L, log w += log((1/K) sum L_k)
-			const double top = *std::max_element(logL.begin(), logL.end());
-			if (!std::isfinite(top)) throw core::Error("RBPF proposal: the sweep likelihood is not finite");
 			double sum = 0;
 			for (double l : logL) sum += std::exp(l - top);
 			double u = random.drawUniform(0.0, sum);

@@ -21,7 +21,8 @@ class SampledProposal
    public:
 	explicit SampledProposal(unsigned samples);
 	/** One step on every particle of `pdf`: appends the new pose to each robotPath and adds the
-	 *  log weight. Throws core::Error when a likelihood is NaN. */
+	 *  log weight. Throws core::Error when a likelihood is NaN, or when none of a particle's
+	 *  samples has a finite one. */
 	void apply(
 		mrpt::maps::CMultiMetricMapPDF& pdf, const mrpt::obs::CActionRobotMovement2D& move,
 		const mrpt::obs::CSensoryFrame& frame) const;
