@@ -46,19 +46,25 @@ awk 'NR == FNR { split($0, kv, "="); box[kv[1]] = $0; next }
      { split($0, kv, "="); print ((kv[1] in box) ? box[kv[1]] : $0) }' box.txt "$root/config/pf-localization.ini" >objmap-pf.ini
 ln -sf objmap/map.simplemap map.simplemap
 
-score() {  # LABEL PATH: one line of whisker-eval's figures
-  "$eval" --path "$2" --truth truth.txt --json | python3 -c "
+score() {  # LABEL PATH [TRUTH]: one line of whisker-eval's figures (also kept in scores.tsv)
+  "$eval" --path "$2" --truth "${3:-truth.txt}" --json | python3 -c "
 import json, sys
 t = json.load(sys.stdin)['trajectory']
-print(f\"$1: ATE RMSE raw {t['ate_rmse_m']:.3f} m, aligned {t['aligned_rmse_m']:.3f} m, max {t['ate_max_m']:.3f} m, final {t['final_error_m']:.3f} m / {t['final_yaw_err_deg']:.1f} deg\")"
+print(f\"$1: ATE RMSE raw {t['ate_rmse_m']:.3f} m, aligned {t['aligned_rmse_m']:.3f} m, max {t['ate_max_m']:.3f} m, final {t['final_error_m']:.3f} m / {t['final_yaw_err_deg']:.1f} deg\")
+with open('scores.tsv', 'a') as f: print('$1', t['ate_rmse_m'], t['aligned_rmse_m'], t['final_error_m'], sep='\\t', file=f)"
 }
 timed() {  # LOG CMD...: runs CMD (stdin closed, output to LOG), prints its wall time
   local t0=$SECONDS; timeout 3600 "${@:2}" </dev/null >"$1" 2>&1 || { tail -5 "$1"; echo "FAILED: ${*:2}"; return 1; }
   echo "    ($((SECONDS - t0)) s)"
 }
 # rbpf-slam's log_estimated_path.txt (step x y z yaw pitch roll timestamp) in the truth's columns
-rbpf_path() { awk '!/^%/ { print $8, $2, $3, $5 }' "$1" >"$2"; }
+# (on a cut log its last line carries timestamp 0: the truth's of that sweep is used)
+rbpf_path() {
+  awk 'NR == FNR { if (!/^%/) t[++n] = $1; next }
+       !/^%/ { k++; print ($8 != 0 ? $8 : t[k]), $2, $3, $5 }' truth.txt "$1" >"$2"
+}
 
+rm -f scores.tsv
 echo "== $steps sweeps of $(basename "$data").rawlog"
 score "odometry alone" odometry.txt
 for seed in ${SEEDS:-1 2 3}; do
@@ -78,6 +84,23 @@ for seed in ${SEEDS:-1 2 3}; do
   score "rbpf-slam, occupancy grid per particle" rbpf-grid-$seed.txt
   if [[ ${WHISKER_SLAM:-0} == 1 ]]; then
     timed slam-$seed.log "$slam" -q -i run.rawlog -o slam-$seed --particles 30 --seed "$seed" --truth truth.txt
-    score "whisker-slam, object map per particle" slam-$seed/estimated_path.txt
+    # a short cut ends with a frame without a sweep (rbpf-slam's line of timestamp 0 above),
+    # which whisker-slam skips: its poses are the truth's first ones
+    awk -v n="$(grep -vc '^%' slam-$seed/estimated_path.txt)" '/^%/ || ++k <= n' truth.txt >truth-slam.txt
+    score "whisker-slam, object map per particle" slam-$seed/estimated_path.txt truth-slam.txt
   fi
 done
+# Over the seeds: median and worst of each run, and how many seeds beat the odometry's raw ATE.
+echo "== over filter seeds ${SEEDS:-1 2 3}"
+python3 - <<'PY'
+import csv, statistics as st
+runs = {}
+for label, raw, aligned, final in csv.reader(open("scores.tsv"), delimiter="\t"):
+    runs.setdefault(label, []).append((float(raw), float(aligned), float(final)))
+odometry = runs.pop("odometry alone")[0][0]
+for label, v in runs.items():
+    raw, aligned, final = ([r[i] for r in v] for i in range(3))
+    print(f"{label}: raw ATE median {st.median(raw):.3f} worst {max(raw):.3f} m, aligned median {st.median(aligned):.3f} "
+          f"worst {max(aligned):.3f} m, final median {st.median(final):.3f} m; {sum(r < odometry for r in raw)} of {len(raw)} "
+          f"seeds below the odometry's {odometry:.3f} m")
+PY
