@@ -58,11 +58,6 @@ bool ModelParams::legsVary() const
 	return std::any_of(classes.begin(), classes.end(), [](const ObjectClass& c) { return c.legsVary(); });
 }
 
-bool ModelParams::legWidthsVary() const
-{
-	return std::any_of(classes.begin(), classes.end(), [](const ObjectClass& c) { return c.leg_width_sigma > 0; });
-}
-
 double ModelParams::maxDiagonal() const
 {
 	double d = 0;
