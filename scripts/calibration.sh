@@ -10,7 +10,9 @@
 # Usage: scripts/calibration.sh [BUILD_DIR] [OUT_DIR] [-- extra whisker-map options...]
 # Environment: MAP_CONFIG (whisker-map's -c), CATEGORIES (default: paper_arena random_yaw
 #   clutter side_by_side large sparse), SEEDS (default: 1 2 3 4 5), NOISES (default: default
-#   very-noisy).
+#   very-noisy), PREFIXES (default none: e.g. "0.1 0.25" also maps the first 10% and 25% of
+#   each run's sweeps, cut with rawlog-edit, and pools those maps too: objects seen in part,
+#   whose existence may lie between 0 and 1).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$(cd "${1:-$root/build}" && pwd)
@@ -25,7 +27,7 @@ noises=${NOISES:-default very-noisy}
 map_args=()
 [[ -n "${MAP_CONFIG:-}" ]] && map_args=(-c "$MAP_CONFIG")
 sim="$build/apps/whisker-sim/whisker-sim" map="$build/apps/whisker-map/whisker-map"
-evl="$build/apps/whisker-eval/whisker-eval"
+evl="$build/apps/whisker-eval/whisker-eval" obs_plugin="$build/libs/obs/libwhiskermap-obs.so"
 for tool in "$sim" "$map" "$evl"; do
   [[ -x "$tool" ]] || { echo "calibration: $tool not found: build first" >&2; exit 1; }
 done
@@ -49,6 +51,14 @@ for n in $noises; do
       fi
       "$map" "${map_args[@]}" ${extra[@]+"${extra[@]}"} -q --jobs 1 -i "$rawlog" --world "$world" -o "$dir/map"
       printf '%s %s %s\n' "$world" "$dir/map/map_tables.csv" "$dir/map/map_candidates.csv" | tee -a "$list" >> "$out/runs-all.txt"
+      for f in ${PREFIXES:-}; do  # the first fraction f of the sweeps: cut after the k-th sweep's time
+        rawlog-edit --list-timestamps --text-file-output "$dir/stamps.txt" -i "$rawlog" -p "$obs_plugin" >/dev/null 2>&1 </dev/null
+        cut_time=$(awk -v f="$f" '$2 == "WHISKERS" { t[++n] = $1 } END { k = int(f * n); if (k < 1) k = 1;
+          printf "%.6f", k < n ? (t[k] + t[k + 1]) / 2 : t[n] + 1 }' "$dir/stamps.txt")
+        rawlog-edit -w --cut --to-time "$cut_time" -i "$rawlog" -o "$dir/prefix-$f.rawlog" -p "$obs_plugin" >/dev/null 2>&1 </dev/null
+        "$map" "${map_args[@]}" ${extra[@]+"${extra[@]}"} -q --jobs 1 -i "$dir/prefix-$f.rawlog" --world "$world" -o "$dir/map-prefix-$f"
+        printf '%s %s %s\n' "$world" "$dir/map-prefix-$f/map_tables.csv" "$dir/map-prefix-$f/map_candidates.csv" | tee -a "$list" >> "$out/runs-all.txt"
+      done
       "$evl" -w "$world" -m "$dir/map/map_tables.csv" --json > "$dir/eval.json"
       row="$c	$s	$n	$(json_value "$dir/eval.json" f1)	$(json_value "$dir/map/summary.json" median)	$(json_value "$dir/map/summary.json" wall_time_s)"
       echo "$row" >> "$out/runs.tsv"
