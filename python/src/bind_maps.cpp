@@ -154,6 +154,18 @@ void bindMaps(py::module_& m)
 			[](const Map& mp) { return mp.read([](const CHierarchicalObjectMap& x) { return x.likelihoodOptions.min_support; }); },
 			[](Map& mp, uint32_t v) { mp.write([&](auto&, CHierarchicalObjectMap& x) { return x.likelihoodOptions.min_support = v; }); },
 			"per-pose mode: objects found at fewer poses are left out")
+		.def_property("batch_sweeps",
+			[](const Map& mp) { return mp.read([](const CHierarchicalObjectMap& x) { return x.insertionOptions.lasting.batch_sweeps; }); },
+			[](Map& mp, uint32_t v) {
+				if (v < 1 || v > 1000) throw py::value_error("batch_sweeps must be in [1, 1000], not " + std::to_string(v));
+				mp.write([&](auto&, CHierarchicalObjectMap& x) { return x.insertionOptions.lasting.batch_sweeps = v; });
+			},
+			"lasting mode: sweeps with contacts annealed together (insertOpts batch_sweeps); see anneal_pending()")
+		.def_property_readonly("pending_sweeps",
+			[](const Map& mp) { return mp.read([](const CHierarchicalObjectMap& x) { return x.lastingMap().pendingSweeps(); }); },
+			"lasting mode: sweeps inserted whose contacts are not annealed yet (batch_sweeps > 1)")
+		.def("anneal_pending", [](Map& mp) { mp.write([](auto&, CHierarchicalObjectMap& x) { return x.annealPending(), 0; }); },
+			 "lasting mode: anneals the pending sweeps' contacts now (call it before reading a finished map)")
 		.def_property_readonly("steps", [](const Map& mp) { return mp.read([](const CHierarchicalObjectMap& x) { return x.steps(); }); },
 							   "sweeps inserted")
 		.def("insert", [](Map& mp, const Obs& sweep, const Pose& pose) {

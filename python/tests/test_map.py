@@ -135,6 +135,27 @@ def test_serialization_round_trip(rawlog, mode):
     assert back.to_bytes() == first.to_bytes()
 
 
+def test_sweeps_annealed_in_batches(rawlog):
+    """batch_sweeps: contacts wait, unexplained, for the batch; anneal_pending() finishes it."""
+    m = wm.Map(mode="lasting", seed=SEED)
+    m.batch_sweeps = 3
+    for pose, sweep in list(rawlog)[:200]:
+        m.insert(sweep, pose)
+    assert m.pending_sweeps in (0, 1, 2)
+    if m.pending_sweeps == 0:
+        m.insert(*reversed(rawlog[200]))
+    assert m.pending_sweeps > 0
+    back = wm.Map.from_bytes(m.to_bytes())
+    assert (back.batch_sweeps, back.pending_sweeps) == (3, m.pending_sweeps)
+    for x in (m, back):
+        x.anneal_pending()
+        assert x.pending_sweeps == 0
+    assert back.to_bytes() == m.to_bytes()
+    assert len(m.map_tables()) > 0
+    with pytest.raises(ValueError):
+        m.batch_sweeps = 0
+
+
 def test_copies_are_deep(rawlog):
     m = build(rawlog, "lasting", sweeps=slice(0, 100))
     for c in (m.copy(), copy.copy(m), copy.deepcopy(m)):

@@ -357,17 +357,18 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheLegSpreads)
 	const auto* begin = static_cast<const uint8_t*>(buf.getRawBufferData());
 	const std::vector<uint8_t> bytes(begin, begin + buf.getTotalBytesCount());
 	const size_t version = 1 + std::string("whiskermap::maps::CHierarchicalObjectMap").size();
-	ASSERT_EQ(bytes[version], 11);
+	ASSERT_EQ(bytes[version], 12);
 	const auto load = [](std::vector<uint8_t> v) {
 		mrpt::io::CMemoryStream in;
 		in.assignMemoryNotOwn(v.data(), v.size());
 		return std::dynamic_pointer_cast<CHierarchicalObjectMap>(mrpt::serialization::archiveFrom(in).ReadObject());
 	};
-	// The tail before MRPT's end flag: two doubles per class, class 2's leg width spread first.
-	const long tail = 16 * static_cast<long>(a.modelParams.classes.size());
+	// The tail before version 12's batch (16 bytes) and MRPT's end flag: two doubles per
+	// class, class 2's leg width spread first.
+	const long tail = 16 * static_cast<long>(a.modelParams.classes.size()), batch = 16;
 	std::vector<uint8_t> old = bytes;
 	old[version] = 10;
-	old.erase(old.end() - 1 - tail, old.end() - 1);
+	old.erase(old.end() - 1 - batch - tail, old.end() - 1);
 	const auto c = load(old);
 	ASSERT_TRUE(c);
 	EXPECT_FALSE(c->modelParams.legsVary());
@@ -375,9 +376,49 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheLegSpreads)
 	for (const double corrupt : {std::nan(""), -0.01, 2.0})
 	{
 		std::vector<uint8_t> bad = bytes;
-		std::memcpy(bad.data() + bad.size() - 1 - tail + 2 * 16, &corrupt, sizeof corrupt);
+		std::memcpy(bad.data() + bad.size() - 1 - batch - tail + 2 * 16, &corrupt, sizeof corrupt);
 		EXPECT_ANY_THROW(load(bad)) << corrupt;
 	}
+}
+
+// Version 12 stores the sweeps annealed together and those pending; a batch outside
+// [1, 1000], more sweeps pending than a batch, or pending contacts past the last are refused.
+TEST(CHierarchicalObjectMap, SerializationKeepsTheSweepsPending)
+{
+	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/paper_arena/default.rawlog");
+	CHierarchicalObjectMap a;
+	a.insertionOptions.lasting.batch_sweeps = 4;
+	for (size_t i = 0; a.lastingMap().pendingSweeps() < 2; i++)
+		a.insertObservation(*rawlog.sweeps[i].obs, mrpt::poses::CPose3D(rawlog.sweeps[i].robotPose));
+	EXPECT_EQ(a.lastingMap().state().legCount(), 0u);  // nothing annealed yet
+	ASSERT_GT(a.lastingMap().state().contactCount(), 0u);
+	const auto b = reloaded(a);
+	ASSERT_TRUE(b);
+	EXPECT_EQ(b->insertionOptions.lasting.batch_sweeps, 4u);
+	EXPECT_EQ(b->lastingMap().pendingSweeps(), 2u);
+	EXPECT_EQ(b->lastingMap().pendingFrom(), a.lastingMap().pendingFrom());
+	mrpt::io::CMemoryStream buf;
+	mrpt::serialization::archiveFrom(buf) << a;
+	const auto* begin = static_cast<const uint8_t*>(buf.getRawBufferData());
+	const std::vector<uint8_t> bytes(begin, begin + buf.getTotalBytesCount());
+	const auto load = [](std::vector<uint8_t> v) {
+		mrpt::io::CMemoryStream in;
+		in.assignMemoryNotOwn(v.data(), v.size());
+		return std::dynamic_pointer_cast<CHierarchicalObjectMap>(mrpt::serialization::archiveFrom(in).ReadObject());
+	};
+	ASSERT_TRUE(load(bytes));
+	// Before MRPT's end flag: batch_sweeps (uint32), sweeps pending (uint32), first pending seq (uint64).
+	const size_t at = bytes.size() - 1 - 16;
+	const auto corrupt = [&](size_t offset, auto value) {
+		std::vector<uint8_t> bad = bytes;
+		std::memcpy(bad.data() + at + offset, &value, sizeof value);
+		return bad;
+	};
+	EXPECT_ANY_THROW(load(corrupt(0, uint32_t{0})));
+	EXPECT_ANY_THROW(load(corrupt(0, uint32_t{1001})));
+	EXPECT_ANY_THROW(load(corrupt(4, uint32_t{4})));
+	EXPECT_ANY_THROW(load(corrupt(8, uint64_t{1} << 40)));
+	EXPECT_TRUE(load(corrupt(4, uint32_t{3})));
 }
 
 // The per-pose mode's consolidation survives the round trip too (objects and records).
@@ -405,15 +446,20 @@ TEST(CHierarchicalObjectMap, PerPoseSerializationRoundTrip)
 // Lasting mode: a copy (as a particle filter makes) and a deserialized map continue exactly
 // as the original; another seed gives another state. With shaft noise the contacts' shafts
 // must survive too (a reload that lost them would score them isotropically). Very noisy
-// sweeps run revisions (noisy_revisions), whose round robin must survive too.
-static void expectLastingCopiesContinue(bool shaftNoise, const std::string& preset = "default")
+// sweeps run revisions (noisy_revisions), whose round robin must survive too. With sweeps
+// annealed in batches (batch_sweeps) the copies are made with sweeps pending, which the
+// copies must anneal as the original does.
+static void expectLastingCopiesContinue(bool shaftNoise, const std::string& preset = "default", uint32_t batch = 1)
 {
 	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/paper_arena/" + preset + ".rawlog");
 	CHierarchicalObjectMap a, c;
 	a.modelParams.shaft_noise = c.modelParams.shaft_noise = shaftNoise;
+	a.insertionOptions.lasting.batch_sweeps = c.insertionOptions.lasting.batch_sweeps = batch;
 	c.insertionOptions.seed = 99;
-	for (size_t i = 0; i < 120; i++)
+	size_t cut = 0;
+	for (; cut < 120 || (batch > 1 && a.lastingMap().pendingSweeps() == 0); cut++)
 	{
+		const size_t i = cut;
 		const mrpt::poses::CPose3D p(rawlog.sweeps[i].robotPose);
 		a.insertObservation(*rawlog.sweeps[i].obs, p);
 		c.insertObservation(*rawlog.sweeps[i].obs, p);
@@ -426,13 +472,19 @@ static void expectLastingCopiesContinue(bool shaftNoise, const std::string& pres
 	auto d = std::dynamic_pointer_cast<CHierarchicalObjectMap>(arch.ReadObject());
 	ASSERT_TRUE(d);
 	EXPECT_EQ(fingerprint(*d), fingerprint(a));
+	for (const auto* m : {&b, d.get()})
+	{
+		EXPECT_EQ(m->lastingMap().pendingSweeps(), a.lastingMap().pendingSweeps());
+		EXPECT_EQ(m->lastingMap().pendingFrom(), a.lastingMap().pendingFrom());
+	}
 	uint32_t revisions = 0;
-	for (size_t i = 120; i < 240; i++)
+	for (size_t i = cut; i < cut + 120; i++)
 	{
 		const mrpt::poses::CPose3D p(rawlog.sweeps[i].robotPose);
 		for (auto* m : {&a, &b, d.get(), &c}) m->insertObservation(*rawlog.sweeps[i].obs, p);
 		revisions += a.lastLastingStats().revisions;
 	}
+	for (auto* m : {&a, &b, d.get(), &c}) m->annealPending();
 	EXPECT_EQ(revisions > 0, preset == "very-noisy");  // only sweeps noisier than sigma_corner
 	EXPECT_EQ(fingerprint(b), fingerprint(a));
 	EXPECT_EQ(fingerprint(*d), fingerprint(a));
@@ -449,6 +501,10 @@ TEST(CHierarchicalObjectMap, LastingCopiesAndReloadsContinueIdenticallyWithShaft
 TEST(CHierarchicalObjectMap, LastingCopiesAndReloadsContinueIdenticallyWithRevisions)
 {
 	expectLastingCopiesContinue(false, "very-noisy");
+}
+TEST(CHierarchicalObjectMap, LastingCopiesAndReloadsContinueIdenticallyWithSweepsPending)
+{
+	expectLastingCopiesContinue(false, "default", 3);
 }
 
 TEST(CHierarchicalObjectMap, PerPoseSameSeedSameMapAndCopiesContinueIdentically)

@@ -262,3 +262,48 @@ TEST(LastingMap, RigidPoseIsCloserToTheTruthOnASparsePath)
 	EXPECT_LT(rigid, 0.7 * loose) << "rigid " << rigid << " m, loose " << loose << " m";
 	EXPECT_LT(rigid, 0.0025);  // whisker-eval on the same run: 1.7 mm (the model's pose: 3.4 mm)
 }
+
+// Sweeps annealed together (insertOpts batch_sweeps): a sweep's contacts join the map at once,
+// unexplained, and are annealed with those of the next sweeps when the batch is full, or at
+// annealPending(). Batches of 3 on the sparse path find every table as single sweeps do.
+TEST(LastingMap, SweepsAnnealedInBatchesFindTheTablesOnASparsePath)
+{
+	const std::string base = SRC + "/config/worlds/eval/sparse/seed1";
+	const auto world = world::World::load(base + ".ini");
+	const auto path = world::Trajectory::readPathFile(base + ".path");
+	const auto noise = world::NoisePreset::load(SRC + "/config/noise/default.ini");
+	Map m(TMode::Lasting);
+	m.map->insertionOptions.lasting.batch_sweeps = 3;
+	world::WhiskerSimulator sim(world, scratchbot(), noise, 1);
+	const auto& lasting = m.map->lastingMap();
+	bool sawPending = false, sawAnnealed = false;
+	for (const auto& pose : path)
+	{
+		if (!sim.poseIsFree(pose)) continue;
+		const uint32_t before = lasting.pendingSweeps();
+		const size_t contacts = lasting.state().contactCount();
+		m.insert(sim, pose);
+		if (lasting.state().contactCount() == contacts) continue;  // touched nothing: not a batch's sweep
+		if (before < 2)
+		{
+			// Pending: this sweep's contacts are held, none explained yet.
+			EXPECT_EQ(lasting.pendingSweeps(), before + 1);
+			for (model::Id c = 0; c < lasting.state().contactIdBound(); c++)
+				if (lasting.state().hasContact(c) && lasting.state().contact(c).seq >= lasting.pendingFrom())
+					EXPECT_EQ(lasting.state().contact(c).leg, model::NONE);
+			sawPending = true;
+		}
+		else
+		{
+			EXPECT_EQ(lasting.pendingSweeps(), 0u);
+			EXPECT_TRUE(m.map->lastLastingStats().changed);
+			sawAnnealed = true;
+		}
+	}
+	EXPECT_TRUE(sawPending && sawAnnealed);
+	m.map->annealPending();
+	EXPECT_EQ(lasting.pendingSweeps(), 0u);
+	const auto found = m.map->mapObjects();
+	EXPECT_EQ(found.size(), world.tables.size());
+	for (const auto& t : world.tables) EXPECT_EQ(countNear(found, t, 0.01, 1), 1u) << "table at " << t.x << ", " << t.y;
+}

@@ -112,7 +112,7 @@ TEST(SweptGridMap, VersionFourStreamsLoadWithoutTheGrid)
 	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
 	ASSERT_EQ(bytes[0], static_cast<uint8_t>(name.size() | 0x80));
 	ASSERT_EQ(std::string(bytes.begin() + 1, bytes.begin() + 1 + static_cast<long>(name.size())), name);
-	ASSERT_EQ(bytes[1 + name.size()], 11);
+	ASSERT_EQ(bytes[1 + name.size()], 12);
 	ASSERT_TRUE(a.lastingMap().state().walls().empty());  // version 10 changes only the walls' records
 	ASSERT_TRUE(a.modelParams.classes.empty());  // version 11 adds 16 bytes per class: none here
 	bytes[1 + name.size()] = 4;
@@ -121,12 +121,13 @@ TEST(SweptGridMap, VersionFourStreamsLoadWithoutTheGrid)
 	// noisy_revisions and revision round robin's insertion number; version 7's move types
 	// (a count, then per type a length byte, the name and two 8-byte counts); version 8's
 	// size_moves and four size offsets per lasting table; version 9's sensor noise (three
-	// doubles); then MRPT's end flag
+	// doubles); version 12's batch (batch_sweeps, sweeps pending, first pending insertion
+	// number: 16 bytes); then MRPT's end flag
 	size_t moveTypes = 4;
 	for (const auto& t : a.moveTypes()) moveTypes += 1 + t.name.size() + 8 + 8;
 	ASSERT_GT(a.moveTypes().size(), 5u);
 	const size_t sizes = 1 + 32 * a.lastingMap().state().tableCount();
-	const size_t tail = 8 + 1 + 8 + 8 + 8 + 8 + 4 + 12 * a.sweptGrid().cells().size() + 8 + 4 + 8 + moveTypes + sizes + 24;
+	const size_t tail = 8 + 1 + 8 + 8 + 8 + 8 + 4 + 12 * a.sweptGrid().cells().size() + 8 + 4 + 8 + moveTypes + sizes + 24 + 16;
 	bytes.erase(bytes.end() - 1 - static_cast<long>(tail), bytes.end() - 1);
 	const auto old = read(bytes);
 	ASSERT_TRUE(old);
@@ -194,7 +195,7 @@ TEST(SweptGridMap, MoveTypeCountsAddUpAndAreReadStrictly)
 	size_t section = 4;
 	for (const auto& t : a.moveTypes()) section += 1 + t.name.size() + 8 + 8;
 	const std::vector<uint8_t> good = bytesOf(a);
-	const size_t sizes = 1 + 32 * a.lastingMap().state().tableCount() + 24;  // versions 8 and 9, after it
+	const size_t sizes = 1 + 32 * a.lastingMap().state().tableCount() + 24 + 16;  // versions 8, 9 and 12, after it
 	const size_t at = good.size() - 1 - sizes - section;  // the section's type count
 	std::vector<uint8_t> bad = good;
 	bad[at] = 65, bad[at + 1] = bad[at + 2] = bad[at + 3] = 0;  // little-endian 65

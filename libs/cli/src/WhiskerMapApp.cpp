@@ -97,6 +97,7 @@ int run(Options& o)
 	else
 		while (reader.next(sweep)) runner.add(sweep);
 	runner.flush();
+	map->annealPending();  // the last sweeps of a batch (insertOpts batch_sweeps > 1)
 	const auto& contents = summary;
 	if (bar) std::fprintf(stderr, "\rwhisker-map: %zu sweeps\n", contents.sweepCount);
 	const std::string text = outputs.finish(

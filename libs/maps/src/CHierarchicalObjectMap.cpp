@@ -240,6 +240,16 @@ void CHierarchicalObjectMap::insertLasting(const obs::CObservationWhiskerContact
 	if (m_lastLasting.changed) m_legCache.invalidate();
 }
 
+void CHierarchicalObjectMap::annealPending()
+{
+	if (!lasting() || m_lasting.pendingSweeps() == 0) return;
+	m_lasting.setOptions(insertionOptions.lasting);
+	const uint64_t seed = splitmix64(insertionOptions.seed ^ splitmix64(m_steps));  // the next sweep's
+	m_lastLasting = m_lasting.annealPending(modelFor(m_lastNoise), samplerParams, seed, &m_sweptGrid);
+	inference::addMoveCounts(m_proposed, m_accepted, m_moveTypes, m_lastLasting);
+	m_legCache.invalidate();
+}
+
 TStepInput CHierarchicalObjectMap::prepareStep(
 	const obs::CObservationWhiskerContacts& sweep, const mrpt::poses::CPose2D& pose)
 {

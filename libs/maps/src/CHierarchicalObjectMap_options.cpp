@@ -49,6 +49,8 @@ void CHierarchicalObjectMap::TInsertionOptions::loadFromConfigFile(
 			static_cast<uint32_t>(sec.integer("unexplained_per_spot", lasting.unexplained_per_spot, 0, 1000));
 		lasting.rigid_pose = sec.boolean("rigid_pose", lasting.rigid_pose);
 		lasting.noisy_revisions = static_cast<uint32_t>(sec.integer("noisy_revisions", lasting.noisy_revisions, 0, 1000));
+		lasting.batch_sweeps = static_cast<uint32_t>(sec.integer("batch_sweeps", lasting.batch_sweeps, 1, 1000));
+		lasting.batch_sweeps = static_cast<uint32_t>(sec.integer("batch_sweeps", lasting.batch_sweeps, 1, 1000));
 		auto& a = lasting.schedule;
 		a.beta_start = sec.number("local_beta_start", a.beta_start, 1e-6, 1e6);
 		a.temperatures = static_cast<uint32_t>(sec.integer("local_temperatures", a.temperatures, 1, 10000));
@@ -71,7 +73,7 @@ void CHierarchicalObjectMap::TInsertionOptions::loadFromConfigFile(
 void CHierarchicalObjectMap::TInsertionOptions::dumpToTextStream(std::ostream& out) const
 {
 	out << "mode=" << modeName(mode) << "\nvisit_radius=" << lasting.visit_radius
-		<< "\ncontacts_per_leg=" << lasting.contacts_per_leg << "\nnoisy_revisions=" << lasting.noisy_revisions << "\nunexplained_per_spot=" << lasting.unexplained_per_spot
+		<< "\ncontacts_per_leg=" << lasting.contacts_per_leg << "\nnoisy_revisions=" << lasting.noisy_revisions << "\nbatch_sweeps=" << lasting.batch_sweeps << "\nunexplained_per_spot=" << lasting.unexplained_per_spot
 		<< "\nrigid_pose=" << lasting.rigid_pose
 		<< "\nlocal_beta_start=" << lasting.schedule.beta_start << "\nlocal_temperatures=" << lasting.schedule.temperatures
 		<< "\nlocal_sweeps_per_temperature=" << lasting.schedule.sweeps_per_temperature

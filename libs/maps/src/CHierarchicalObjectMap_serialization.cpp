@@ -293,7 +293,7 @@ void readLegSpreads(CArchive& in, model::ModelParams& m)
 }
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 11; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 12; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -355,6 +355,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	out << m_lastNoise.sigma_r << m_lastNoise.sigma_phi << m_lastNoise.sigma_tau;
 	// Version 11: the classes' leg width and texture spreads.
 	writeLegSpreads(out, m);
+	// Version 12: sweeps annealed together, and the sweeps pending (inserted, not annealed).
+	out << l.batch_sweeps << m_lasting.pendingSweeps() << m_lasting.pendingFrom();
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -373,6 +375,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 9:
 		case 10:
 		case 11:
+		case 12:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -459,12 +462,24 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 			if (version >= 11) readLegSpreads(in, m);
 			else  // older streams: every class's legs nominal
 				for (auto& cl : m.classes) cl.leg_width_sigma = cl.texture_sigma = 0;
+			insertionOptions.lasting.batch_sweeps = 1;  // versions before 12: every sweep annealed at once
+			uint32_t pendingSweeps = 0;
+			uint64_t pendingFrom = 0;
+			if (version >= 12)
+			{
+				in >> insertionOptions.lasting.batch_sweeps >> pendingSweeps >> pendingFrom;
+				if (insertionOptions.lasting.batch_sweeps < 1 || insertionOptions.lasting.batch_sweeps > 1000 ||
+					pendingSweeps >= insertionOptions.lasting.batch_sweeps || pendingFrom > lasting.seq)
+					THROW_EXCEPTION("CHierarchicalObjectMap: corrupt batch (batch_sweeps not in [1, 1000], or more "
+									"sweeps pending than a batch, or pending contacts past the last)");
+			}
 			if (version >= 1)
 			{
 				m_lasting.state().restore(
 					lasting.tables, lasting.existence, lasting.reported, lasting.legs, lasting.evidence, lasting.contacts,
 					lasting.seq, m);
 				m_lasting.state().restoreWalls(walls);
+				m_lasting.setPending(pendingSweeps, pendingFrom);
 			}
 			if (!(m.sigma_corner > 0) || !std::isfinite(m.sigma_corner))
 				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt model (sigma_corner not a positive number)");

@@ -124,14 +124,30 @@ LastingMap::TStats LastingMap::insert(
 	const inference::SamplerParams& sampler, uint64_t seed, const model::SweptGrid* grid)
 {
 	if (contacts.empty()) return {};
+	if (m_pendingSweeps == 0) m_pendingFrom = m_state.nextSeq();
+	for (const auto& s : contacts) m_state.addContact(s);
+	if (++m_pendingSweeps < m_options.batch_sweeps) return {};
+	return annealPending(model, sampler, seed, grid);
+}
+
+LastingMap::TStats LastingMap::annealPending(
+	const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed, const model::SweptGrid* grid)
+{
+	if (m_pendingSweeps == 0) return {};
+	m_pendingSweeps = 0;
 	if (!(m_samplerModel == model) || !(m_samplerSchedule == m_options.schedule))
 	{
 		m_sampler.reset(), m_reviser.reset();
 		m_samplerModel = model;
 		m_samplerSchedule = m_options.schedule;
 	}
+	// The pending contacts, in insertion order (a scan: small against the anneal).
 	m_new.clear();
-	for (const auto& s : contacts) m_new.push_back(m_state.addContact(s));
+	for (model::Id c = 0; c < m_state.contactIdBound(); c++)
+		if (m_state.hasContact(c) && m_state.contact(c).seq >= m_pendingFrom) m_new.push_back(c);
+	std::sort(m_new.begin(), m_new.end(), [&](model::Id a, model::Id b) {
+		return m_state.contact(a).seq < m_state.contact(b).seq;
+	});
 	TStats stats =
 		solve(model, localSampler(sampler, m_options.schedule), m_options.visit_radius, seed, grid, m_sampler);
 	if (model.cornersTighterThanReadings())

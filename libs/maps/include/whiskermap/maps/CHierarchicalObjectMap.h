@@ -150,6 +150,10 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	void integrateStep(TStepInput in, inference::StepResult result);
 	/** Ask the next insertions for a blackboard snapshot at this schedule index (-1: none). */
 	void setSnapshotTemperature(int index) { m_snapshotTemperature = index; }
+	/** Lasting mode: anneals the contacts of the sweeps inserted but not annealed yet
+	 *  (insertOpts batch_sweeps > 1; doc/map-plugin.md), with the last sweep's noise model.
+	 *  Call it before reading a finished map; nothing to do when none are pending. */
+	void annealPending();
 
 	/** A model table as a full table of the known size, yaw in (-90, 90] degrees (it is the
 	 *  same table turned by 180). */

@@ -45,6 +45,11 @@ class LastingMap
 		 *  (inference::fitRigidTable), refitted when its legs change; false: the model's own
 		 *  table pose (legs loose at its corners, eq. 6). */
 		bool rigid_pose = true;
+		/** Sweeps annealed together: each sweep's contacts join the state at once (explicit,
+		 *  unexplained), and their local anneal (with its revisions) runs when this many
+		 *  sweeps with contacts are pending, or at annealPending(). 1: every sweep (the
+		 *  pending contacts are invisible to the sweep likelihood until then; doc/map-plugin.md). */
+		uint32_t batch_sweeps = 1;
 		/** The local anneal's schedule (insertOpts local_*, doc/map-plugin.md): it starts
 		 *  from the map as it was with the new contacts associated, not from an empty board,
 		 *  so it runs cooler and shorter than a per-pose step. beta_end and the moves are the
@@ -75,10 +80,18 @@ class LastingMap
 	};
 
 	LastingMap() = default;
-	LastingMap(const LastingMap& o) : m_state(o.m_state), m_options(o.m_options), m_reviseSeq(o.m_reviseSeq) {}
+	LastingMap(const LastingMap& o)
+		: m_state(o.m_state),
+		  m_options(o.m_options),
+		  m_reviseSeq(o.m_reviseSeq),
+		  m_pendingSweeps(o.m_pendingSweeps),
+		  m_pendingFrom(o.m_pendingFrom)
+	{
+	}
 	LastingMap& operator=(const LastingMap& o)
 	{
 		m_state = o.m_state, m_options = o.m_options, m_reviseSeq = o.m_reviseSeq;
+		m_pendingSweeps = o.m_pendingSweeps, m_pendingFrom = o.m_pendingFrom;
 		return *this;
 	}
 
@@ -86,11 +99,23 @@ class LastingMap
 	const TOptions& options() const { return m_options; }
 
 	/** Inserts the contacts of one sweep (world frame), scored with `model`, annealed with
-	 *  `sampler`'s schedule from `seed`. With `model.free_space`, walls pay the untouched
-	 *  swept cells of `grid` (eq. 25; null: none), which must already hold this sweep. */
+	 *  `sampler`'s schedule from `seed` together with those of the sweeps pending before it
+	 *  once TOptions::batch_sweeps sweeps are pending (until then: added, not annealed, the
+	 *  stats empty). With `model.free_space`, walls pay the untouched swept cells of `grid`
+	 *  (eq. 25; null: none), which must already hold this sweep. */
 	TStats insert(
 		const std::vector<obs::Shapelet>& contacts, const model::ModelParams& model,
 		const inference::SamplerParams& sampler, uint64_t seed, const model::SweptGrid* grid = nullptr);
+	/** Anneals the pending sweeps' contacts now (as insert() does when the batch is full);
+	 *  empty stats when none are pending. */
+	TStats annealPending(
+		const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed,
+		const model::SweptGrid* grid = nullptr);
+	/** Sweeps inserted but not annealed yet, and the insertion number (Contact::seq) of their
+	 *  first contact: the pending contacts are those from it on (serialized with the map). */
+	uint32_t pendingSweeps() const { return m_pendingSweeps; }
+	uint64_t pendingFrom() const { return m_pendingFrom; }
+	void setPending(uint32_t sweeps, uint64_t fromSeq) { m_pendingSweeps = sweeps, m_pendingFrom = fromSeq; }
 
 	/** The spread of table t's pose (doc/map-plugin.md, "Pose spread"): inference::rigidPoseSpread
 	 *  from its rigid fit, under `model` with shaft noise on (as the reported pose is fitted),
@@ -104,7 +129,7 @@ class LastingMap
 	 *  the original would). */
 	uint64_t reviseSeq() const { return m_reviseSeq; }
 	void setReviseSeq(uint64_t s) { m_reviseSeq = s; }
-	void clear() { m_state.clear(), m_reviseSeq = 0; }
+	void clear() { m_state.clear(), m_reviseSeq = 0, m_pendingSweeps = 0, m_pendingFrom = 0; }
 
    private:
 	/** The local problem around m_new (hypotheses within `visit` metres visited): extracted,
@@ -134,6 +159,8 @@ class LastingMap
 	model::LastingState m_state;
 	TOptions m_options;
 	uint64_t m_reviseSeq = 0;
+	uint32_t m_pendingSweeps = 0;
+	uint64_t m_pendingFrom = 0;
 	// Reused across insertions (not copied: a copy rebuilds them): the local schedule's
 	// sampler and the revisions' (the sampler's full schedule), each for m_samplerModel.
 	std::unique_ptr<inference::BlackboardSampler> m_sampler, m_reviser;
