@@ -46,12 +46,16 @@ std::string truthBeside(const std::string& rawlog)
 	return fs::exists(gt) ? gt.string() : "";
 }
 
-/** Every particle's map: no history kept (the outputs come from a rebuild). */
-void forgetHistory(mrpt::maps::TSetOfMetricMapInitializers& inits)
+/** Every particle's map: no history kept (the outputs come from a rebuild), and the sweeps
+ *  annealed together that the SLAM config asks for. */
+void particleMaps(mrpt::maps::TSetOfMetricMapInitializers& inits, const slam::TSlamParams& params)
 {
 	for (auto& def : inits)
 		if (auto* ours = dynamic_cast<maps::CHierarchicalObjectMap::TMapDefinition*>(def.get()))
+		{
 			ours->insertionOptions.keep_history = false;
+			if (params.batch_sweeps > 0) ours->insertionOptions.lasting.batch_sweeps = params.batch_sweeps;
+		}
 }
 
 /** The same tables, in any order (table ids, hence the order, may differ: the particle's map
@@ -78,7 +82,7 @@ int run(Options& o)
 	if (o.particles) params.particles = *o.particles;
 	if (o.seed) params.seed = *o.seed;
 	auto inits = maps::MapConfig::load(params.map_config);
-	forgetHistory(inits);
+	particleMaps(inits, params);
 	std::optional<world::World> world;
 	if (!o.world.empty()) world = world::World::load(o.world);
 	SlamOutputs::TRun result;
@@ -155,8 +159,9 @@ int run(Options& o)
 	});
 	runner.flush();
 	estimatedText.close();
+	result.mapMatches = sameTables(map->mapTables(), slam.bestMap().mapTables());
+	map->annealPending();  // the last sweeps of a batch (batch_sweeps): the particle's own map has them pending
 	result.mapTables = map->mapTables();
-	result.mapMatches = sameTables(result.mapTables, slam.bestMap().mapTables());
 	if (!result.mapMatches && !o.quiet)
 		std::fprintf(stderr, "whisker-slam: warning: the map written (rebuilt at the best path) differs from the best "
 							 "particle's own map (summary.json: map_matches_best_particle; doc/slam.md)\n");

@@ -39,6 +39,7 @@ TSlamParams TSlamParams::load(const std::string& path)
 		sec.fail("odometry_model", "the odometry file has no [motion_model] section and is not exact");
 	p.motion_noise_scale = sec.number("motion_noise_scale", p.motion_noise_scale, 0.01, 100);
 	p.proposal_samples = static_cast<unsigned>(sec.integer("proposal_samples", p.proposal_samples, 1, 10000));
+	p.batch_sweeps = static_cast<unsigned>(sec.integer("batch_sweeps", p.batch_sweeps, 0, 1000));
 	p.resample_ess = sec.number("resample_ess", p.resample_ess, 0, 1);
 	const std::map<std::string, PF::TParticleResamplingAlgorithm> methods = {
 		{"multinomial", PF::prMultinomial}, {"residual", PF::prResidual},

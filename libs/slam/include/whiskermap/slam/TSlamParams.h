@@ -17,6 +17,9 @@ struct TSlamParams
 	world::OdometryNoise motion;  ///< odometry preset whose matched Gaussian model moves the particles
 	double motion_noise_scale = 1;  ///< multiplies the motion model's std-devs (a1..a4)
 	unsigned proposal_samples = 1;  ///< motion samples per particle and step (SampledProposal; 1: MRPT's standard proposal)
+	/** Sweeps every particle's map anneals together (its insertOpts batch_sweeps, overridden
+	 *  for the particles; 0: the map config's own). */
+	unsigned batch_sweeps = 0;
 	double resample_ess = 0.5;  ///< resample when the normalised effective sample size drops below this
 	mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling =
 		mrpt::bayes::CParticleFilter::prSystematic;
