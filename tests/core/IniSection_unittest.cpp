@@ -52,7 +52,8 @@ TEST(IniSection, RejectsMissingBadAndOutOfRangeValues)
 	EXPECT_EQ(errorOf([&] { s.number("missing", 0, 1); }), "f.ini: [s] missing: missing required key");
 	EXPECT_EQ(errorOf([&] { s.number("word", 0, 1); }), "f.ini: [s] word: 'abc' is not a number");
 	EXPECT_EQ(errorOf([&] { s.number("half", 0, 1); }), "f.ini: [s] half: '1.5x' is not a number");
-	EXPECT_NE(errorOf([&] { s.number("big", 0, 10); }).find("out of range"), std::string::npos);
+	EXPECT_EQ(errorOf([&] { s.number("big", 0, 10); }), "f.ini: [s] big: '100' out of range [0, 10]");
+	EXPECT_EQ(errorOf([&] { s.number("big", 0.001, 99.5); }), "f.ini: [s] big: '100' out of range [0.001, 99.5]");
 	EXPECT_NE(errorOf([&] { s.number("nan", 0, 10); }).find("not finite"), std::string::npos);
 	EXPECT_NE(errorOf([&] { s.integer("frac", 0, 10); }).find("whole number"), std::string::npos);
 	EXPECT_NE(errorOf([&] { s.boolean("flag", true); }).find("not a boolean"), std::string::npos);

@@ -6,7 +6,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iterator>
+#include <sstream>
 #include <vector>
 
 namespace whiskermap::core
@@ -73,10 +75,17 @@ double IniSection::parseNumber(const std::string& key, const std::string& s) con
 
 double IniSection::number(const std::string& key, double lo, double hi)
 {
-	const double v = parseNumber(key, raw(key));
+	const std::string s = raw(key);
+	const double v = parseNumber(key, s);
 	if (v < lo || v > hi)
-		fail(key, std::to_string(v) + " out of range [" + std::to_string(lo) + ", " +
-					  std::to_string(hi) + "]");
+	{
+		const auto shortest = [](double x) {  // as a user writes it: 0.001, 1000, 1e+06
+			std::ostringstream o;
+			o << std::setprecision(15) << x;
+			return o.str();
+		};
+		fail(key, "'" + s + "' out of range [" + shortest(lo) + ", " + shortest(hi) + "]");
+	}
 	return v;
 }
 
