@@ -8,6 +8,9 @@
 # WORLD=NAME (default paper_arena) runs another shipped SLAM world instead: random_yaw1 (its
 # world config/worlds/eval/random_yaw/seed1.ini, its log datasets/slam/random_yaw1_action-sf;
 # both worlds are 4 m x 4 m, the .ini's uniform prior).
+# TRAJECTORY=explore|wall-follow|loop runs on another path instead of the shipped lawnmower
+# log: whisker-sim's generator through the same world (default odometry noise, 8 Hz, 0.4 m/s,
+# simulator seed PATH_SEED, default 7), the map still the lawnmower's at the true poses.
 # For each filter seed of SEEDS (default 1..10) it prints whether the estimate converged
 # (the last estimate, and every one from some step on, within MAX_POS m and MAX_YAW degrees
 # of the truth: defaults 0.10 and 8), the step it converged at (the first from which all
@@ -30,7 +33,17 @@ case $world in
   *) echo "global-localization.sh: unknown WORLD '$world' (paper_arena or random_yaw1)" >&2; exit 1 ;;
 esac
 data=$root/datasets/slam/${world}_action-sf
+trajectory=${TRAJECTORY:-lawnmower}
 cd "$work"
+case $trajectory in
+  lawnmower) ;;
+  explore|wall-follow|loop)
+    # Long enough for STEPS sweeps at 8 Hz (a pattern repeats until then).
+    "$sim" -q --world "$world_ini" --trajectory "$trajectory" --speed 0.4 --rate 8 --duration $((steps / 8 + 2)) \
+      --robot scratchbot --noise default --odometry default --seed "${PATH_SEED:-7}" --format action-sf -o path-run.rawlog
+    data=$work/path-run ;;
+  *) echo "global-localization.sh: unknown TRAJECTORY '$trajectory' (lawnmower, explore, wall-follow or loop)" >&2; exit 1 ;;
+esac
 
 if [[ ! -s map.simplemap ]]; then
   "$sim" -q --world "$world_ini" --trajectory lawnmower --speed 0.4 --rate 8 \
