@@ -41,9 +41,11 @@ rm -rf "$work"; mkdir -p "$work"
 # 0. The .ini's map definition is whisker-map's (keys and values; comments may differ).
 map_keys() { sed -n '/^\[MetricMap\]/,$p' "$1" | sed -e 's/[;#].*//' -e 's/[[:space:]]//g' | grep -v '^$'; }
 # (config/pf-global-localization.ini, the global-localisation variant, too, but for its
-# use_swept_grid = true)
+# use_swept_grid = true and its own sigma_contact: scoring keys, not the map's)
 for f in "$ini" "$src/config/pf-global-localization.ini"; do
-  if ! diff <(map_keys "$src/config/whisker-map.ini") <(map_keys "$f" | grep -vx 'use_swept_grid=true') >"$work/map_keys.diff"; then
+  own='^$'; [[ $f == "$ini" ]] || own='^sigma_contact='
+  if ! diff <(map_keys "$src/config/whisker-map.ini" | grep -v "$own") \
+      <(map_keys "$f" | grep -vx 'use_swept_grid=true' | grep -v "$own") >"$work/map_keys.diff"; then
     cat "$work/map_keys.diff"
     echo "FAIL: the [MetricMap...] sections of $f differ from config/whisker-map.ini's (< whisker-map, > pf-localization); copy them over (doc/pf-localization.md)"
     exit 1
