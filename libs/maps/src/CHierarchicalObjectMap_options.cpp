@@ -50,7 +50,6 @@ void CHierarchicalObjectMap::TInsertionOptions::loadFromConfigFile(
 		lasting.rigid_pose = sec.boolean("rigid_pose", lasting.rigid_pose);
 		lasting.noisy_revisions = static_cast<uint32_t>(sec.integer("noisy_revisions", lasting.noisy_revisions, 0, 1000));
 		lasting.batch_sweeps = static_cast<uint32_t>(sec.integer("batch_sweeps", lasting.batch_sweeps, 1, 1000));
-		lasting.batch_sweeps = static_cast<uint32_t>(sec.integer("batch_sweeps", lasting.batch_sweeps, 1, 1000));
 		auto& a = lasting.schedule;
 		a.beta_start = sec.number("local_beta_start", a.beta_start, 1e-6, 1e6);
 		a.temperatures = static_cast<uint32_t>(sec.integer("local_temperatures", a.temperatures, 1, 10000));
