@@ -290,7 +290,9 @@ TEST(LastingMap, SweepsAnnealedInBatchesFindTheTablesOnASparsePath)
 			EXPECT_EQ(lasting.pendingSweeps(), before + 1);
 			for (model::Id c = 0; c < lasting.state().contactIdBound(); c++)
 				if (lasting.state().hasContact(c) && lasting.state().contact(c).seq >= lasting.pendingFrom())
+				{
 					EXPECT_EQ(lasting.state().contact(c).leg, model::NONE);
+				}
 			sawPending = true;
 		}
 		else

@@ -66,6 +66,62 @@ TEST(Wall, FaceGeometry)
 	EXPECT_NEAR(r.hy, 0.05, 1e-12);
 }
 
+// The cheap reject the overlap and link searches run first: it must never reject a point
+// within d of the slab (that would change their results), and rejects what lies well outside
+// the centre line's box.
+TEST(Wall, FarFromNeverRejectsAPointNearTheSlab)
+{
+	// By hand: the +x wall's box grown by 0.05 + 0.1 is [-0.15, 2.15] x [-0.15, 0.15].
+	EXPECT_FALSE(wall.farFrom(2.149, 0.149, 0.1));
+	EXPECT_TRUE(wall.farFrom(2.151, 0, 0.1));
+	EXPECT_TRUE(wall.farFrom(1, -0.151, 0.1));
+	EXPECT_FALSE(wall.farFrom(1, 0, 0));  // on the centre line
+	// Turned walls, points on a grid around them: whenever the exact distance to the slab (its
+	// rectangle's perimeter, 0 inside) is within d, farFrom is false.
+	int near = 0, rejected = 0;
+	for (const double yaw : {0.0, 0.3, 1.2, M_PI_2, 2.5, -2.9})
+	{
+		const Wall w{0.5, -0.2, 0.5 + 1.3 * std::cos(yaw), -0.2 + 1.3 * std::sin(yaw), 0.1, 0.3};
+		const OrientedRect r = w.rect();
+		for (double x = -1.5; x <= 2.5; x += 0.02)
+			for (double y = -1.7; y <= 1.7; y += 0.02)
+			{
+				const double dx = x - r.cx, dy = y - r.cy, c = std::cos(r.theta), sn = std::sin(r.theta);
+				const double lx = c * dx + sn * dy, ly = -sn * dx + c * dy;
+				const bool inside = std::abs(lx) <= r.hx && std::abs(ly) <= r.hy;
+				const double distance = inside ? 0 : r.perimeter(x, y).distance;
+				for (const double d : {0.0, 0.05, 0.2})
+				{
+					const bool far = w.farFrom(x, y, d);
+					if (distance <= d)
+					{
+						near++;
+						EXPECT_FALSE(far) << x << " " << y << " " << d << " yaw " << yaw;
+					}
+					rejected += far;
+				}
+			}
+	}
+	EXPECT_GT(near, 1000);
+	EXPECT_GT(rejected, 10000);  // and it does reject: most of the grid lies far from the wall
+}
+
+// The per-wall frame gives the same faces, bit for bit, as the one-point queries.
+TEST(Wall, FrameQueriesMatchThePointQueries)
+{
+	const Wall w{0.3, 0.1, -0.9, 1.4, 0.1, 0.3};
+	const Wall::Frame fr = w.frame();
+	for (const int f : Wall::FACES)
+	{
+		const Wall::FaceHit a = w.hit(0.7, -0.2, f), b = w.hit(fr, 0.7, -0.2, f);
+		EXPECT_EQ(a.across, b.across);
+		EXPECT_EQ(a.along, b.along);
+		EXPECT_EQ(a.excess, b.excess);
+		EXPECT_EQ(a.normal, b.normal);
+	}
+	EXPECT_EQ(fr.len, w.length());
+}
+
 TEST(Wall, ShapeletDensityByHand)
 {
 	const ModelParams p = handParams();

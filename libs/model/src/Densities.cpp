@@ -176,9 +176,9 @@ namespace
 {
 /** Delta_WS of eq. 22 against face `side` (a long face or an end cap: Wall::hit), without
  *  the texture term. */
-double wallFaceCost(const obs::Shapelet& s, const Wall& w, int side, const ModelParams& p)
+double wallFaceCost(const obs::Shapelet& s, const Wall& w, const Wall::Frame& fr, int side, const ModelParams& p)
 {
-	const Wall::FaceHit h = w.hit(s.x, s.y, side);
+	const Wall::FaceHit h = w.hit(fr, s.x, s.y, side);
 	const double a = core::wrapToPi(s.normal - h.normal);
 	double position = (sq(h.across) + sq(h.excess)) / sq(p.sigma_r);
 	if (p.shaft_noise && s.hasShaft())
@@ -194,10 +194,11 @@ double wallFaceCost(const obs::Shapelet& s, const Wall& w, int side, const Model
 /** The face of eq. 22's minimum for contact s (the first of Wall::FACES on a tie) and its cost. */
 std::pair<int, double> bestWallFaceCost(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
 {
-	std::pair<int, double> best{Wall::FACES[0], wallFaceCost(s, w, Wall::FACES[0], p)};
+	const Wall::Frame fr = w.frame();
+	std::pair<int, double> best{Wall::FACES[0], wallFaceCost(s, w, fr, Wall::FACES[0], p)};
 	for (const int f : Wall::FACES)
 		if (f != best.first)
-			if (const double c = wallFaceCost(s, w, f, p); c < best.second) best = {f, c};
+			if (const double c = wallFaceCost(s, w, fr, f, p); c < best.second) best = {f, c};
 	return best;
 }
 }  // namespace

@@ -32,7 +32,9 @@ double logShapeletDensity(const Blackboard& bb, size_t s, Id leg)
 int overlappingWalls(const Blackboard& bb, const OrientedRect& r)
 {
 	int n = 0;
-	for (Id w = 0; w < bb.wallIdBound(); w++) n += bb.hasWall(w) && r.overlaps(bb.wall(w).rect());
+	const double reach = std::hypot(r.hx, r.hy);  // r lies within this of its centre
+	for (Id w = 0; w < bb.wallIdBound(); w++)
+		n += bb.hasWall(w) && !bb.wall(w).farFrom(r.cx, r.cy, reach) && r.overlaps(bb.wall(w).rect());
 	return n;
 }
 
@@ -221,7 +223,12 @@ double logOddsWall(const Blackboard& bb, Id wall)
 	for (const Id s : bb.shapeletsOfWall(wall)) sum += logShapeletLinked(bb, static_cast<size_t>(s)) - logShapeletNull(p);
 	int legs = 0;
 	const OrientedRect r = w.rect();
-	for (Id l = 0; l < bb.legIdBound(); l++) legs += bb.hasLeg(l) && legRect(bb.leg(l)).overlaps(r);
+	for (Id l = 0; l < bb.legIdBound(); l++)
+	{
+		if (!bb.hasLeg(l)) continue;
+		const OrientedRect leg = legRect(bb.leg(l));
+		legs += !w.farFrom(leg.cx, leg.cy, std::hypot(leg.hx, leg.hy)) && leg.overlaps(r);
+	}
 	return sum + logOverlap(legs, p);
 }
 

@@ -14,37 +14,47 @@ bool Wall::sameAs(const Wall& o, double eps) const
 		   close(texture, o.texture);
 }
 
+bool Wall::farFrom(double x, double y, double d) const
+{
+	// The slab lies within thickness / 2 of its centre line, the centre line within its box.
+	const double grow = (thickness / 2 + d) * (1 + 1e-9) + 1e-12;
+	return x < std::min(x0, x1) - grow || x > std::max(x0, x1) + grow || y < std::min(y0, y1) - grow ||
+		   y > std::max(y0, y1) + grow;
+}
+
 OrientedRect Wall::rect() const
 {
 	return {(x0 + x1) / 2, (y0 + y1) / 2, std::atan2(y1 - y0, x1 - x0), length() / 2, thickness / 2};
 }
 
-Wall::FaceHit Wall::face(double x, double y, int side) const
+Wall::Frame Wall::frame() const
 {
 	const double len = length();
-	// Unit direction u; the left normal n = (-uy, ux). A degenerate wall points along x.
-	const double ux = len > 0 ? (x1 - x0) / len : 1, uy = len > 0 ? (y1 - y0) / len : 0;
-	const double dx = x - x0, dy = y - y0;
+	return {len, len > 0 ? (x1 - x0) / len : 1, len > 0 ? (y1 - y0) / len : 0};
+}
+
+Wall::FaceHit Wall::face(const Frame& fr, double x, double y, int side) const
+{
+	// Unit direction u; the left normal n = (-uy, ux).
+	const double ux = fr.ux, uy = fr.uy, dx = x - x0, dy = y - y0;
 	const double along = ux * dx + uy * dy, offset = -uy * dx + ux * dy;  // offset along n
 	FaceHit h;
 	h.side = side;
 	h.across = side * offset - thickness / 2;
 	h.along = along;
-	h.excess = std::max({0.0, -along, along - len});
+	h.excess = std::max({0.0, -along, along - fr.len});
 	h.normal = std::atan2(side * ux, -side * uy);  // side * n
 	return h;
 }
 
-Wall::FaceHit Wall::hit(double x, double y, int f) const
+Wall::FaceHit Wall::hit(const Frame& fr, double x, double y, int f) const
 {
-	if (f == 1 || f == -1) return face(x, y, f);
-	const double len = length();
-	const double ux = len > 0 ? (x1 - x0) / len : 1, uy = len > 0 ? (y1 - y0) / len : 0;
-	const double dx = x - x0, dy = y - y0;
+	if (f == 1 || f == -1) return face(fr, x, y, f);
+	const double ux = fr.ux, uy = fr.uy, dx = x - x0, dy = y - y0;
 	const double along = ux * dx + uy * dy, offset = -uy * dx + ux * dy;
 	FaceHit h;
 	h.side = f;
-	h.across = f > 0 ? along - len : -along;
+	h.across = f > 0 ? along - fr.len : -along;
 	h.along = offset;
 	h.excess = std::max(0.0, std::abs(offset) - thickness / 2);
 	h.normal = f > 0 ? std::atan2(uy, ux) : std::atan2(-uy, -ux);
@@ -53,9 +63,8 @@ Wall::FaceHit Wall::hit(double x, double y, int f) const
 
 Wall::FaceHit Wall::nearestFace(double x, double y) const
 {
-	const double len = length();
-	const double ux = len > 0 ? (x1 - x0) / len : 1, uy = len > 0 ? (y1 - y0) / len : 0;
-	return face(x, y, -uy * (x - x0) + ux * (y - y0) >= 0 ? 1 : -1);
+	const Frame fr = frame();
+	return face(fr, x, y, -fr.uy * (x - x0) + fr.ux * (y - y0) >= 0 ? 1 : -1);
 }
 
 double Wall::faceDistance(double x, double y, int side) const

@@ -47,9 +47,11 @@ void WallEvidence::add(const obs::Shapelet& s, const Wall& w, const ModelParams&
 	m_count++;
 }
 
-double WallEvidence::cost(double d, double c, double thickness) const
+WallEvidence::Normal WallEvidence::normalAt(double d) const { return {std::cos(m_phi + d), std::sin(m_phi + d)}; }
+
+double WallEvidence::cost(double d, const Normal& n, double c, double thickness) const
 {
-	const double nx = std::cos(m_phi + d), ny = std::sin(m_phi + d);
+	const double nx = n.x, ny = n.y;
 	double sum = m_saa - 2 * d * m_sa + m_wa * d * d;  // eq. 22's angle term
 	for (int k = 0; k < 2; k++)
 	{
@@ -62,9 +64,9 @@ double WallEvidence::cost(double d, double c, double thickness) const
 	return sum;
 }
 
-double WallEvidence::bestOffset(double d, double thickness) const
+double WallEvidence::bestOffset(const Normal& n, double thickness) const
 {
-	const double nx = std::cos(m_phi + d), ny = std::sin(m_phi + d);
+	const double nx = n.x, ny = n.y;
 	const Face &a = m_face[0], &b = m_face[1];
 	const double w = a.w + b.w;
 	if (w <= 0) return 0;
@@ -75,14 +77,16 @@ double WallEvidence::logLikelihood(const Wall& w, const ModelParams& p) const
 {
 	if (m_count == 0) return 0;
 	// The wall's face whose normal is within 90 deg of the reference one is face index 0.
-	const Wall::FaceHit h = w.face(m_ax, m_ay, 1);
+	const Wall::Frame fr = w.frame();
+	const Wall::FaceHit h = w.face(fr, m_ax, m_ay, 1);
 	const int side = std::cos(h.normal - m_phi) >= 0 ? 1 : -1;
-	const double d = core::wrapToPi(w.face(m_ax, m_ay, side).normal - m_phi);
+	const Wall::FaceHit hs = side == 1 ? h : w.face(fr, m_ax, m_ay, side);
+	const double d = core::wrapToPi(hs.normal - m_phi);
 	// Offset of the centre line from the anchor along the reference face's normal.
-	const double c = -(w.face(m_ax, m_ay, side).across + w.thickness / 2);
+	const double c = -(hs.across + w.thickness / 2);
 	const double tex = m_stt - 2 * w.texture * m_st + m_wt * w.texture * w.texture;
 	// The weights were 1/sigma^2 of the folding model: the costs are eq. 22's Delta sums.
-	return m_count * std::log(p.alpha_S) - cost(d, c, w.thickness) - tex - m_capCost;  // eq. 22, summed
+	return m_count * std::log(p.alpha_S) - cost(d, normalAt(d), c, w.thickness) - tex - m_capCost;  // eq. 22, summed
 }
 
 Wall WallEvidence::fit(double thickness) const
@@ -91,15 +95,19 @@ Wall WallEvidence::fit(double thickness) const
 	const double mean = m_wa > 0 ? m_sa / m_wa : 0;
 	double lo = mean - 0.5, hi = mean + 0.5;
 	const double g = (std::sqrt(5.0) - 1) / 2;
-	const auto f = [&](double d) { return cost(d, bestOffset(d, thickness), thickness); };
+	const auto f = [&](double d) {
+		const Normal n = normalAt(d);
+		return cost(d, n, bestOffset(n, thickness), thickness);
+	};
 	double a = hi - g * (hi - lo), b = lo + g * (hi - lo), fa = f(a), fb = f(b);
 	for (int i = 0; i < 60; i++)
 	{
 		if (fa < fb) hi = b, b = a, fb = fa, a = hi - g * (hi - lo), fa = f(a);
 		else lo = a, a = b, fa = fb, b = lo + g * (hi - lo), fb = f(b);
 	}
-	const double d = (lo + hi) / 2, c = bestOffset(d, thickness);
-	const double nx = std::cos(m_phi + d), ny = std::sin(m_phi + d), ux = ny, uy = -nx;
+	const double d = (lo + hi) / 2;
+	const Normal n = normalAt(d);
+	const double c = bestOffset(n, thickness), nx = n.x, ny = n.y, ux = ny, uy = -nx;
 	const double cx = m_ax + c * nx, cy = m_ay + c * ny;  // a point of the centre line
 	const double a0 = ux * (m_lox - cx) + uy * (m_loy - cy), a1 = ux * (m_hix - cx) + uy * (m_hiy - cy);
 	Wall w;

@@ -18,6 +18,10 @@ struct Wall
 	/** Same end points, thickness and texture within `eps` (the closed-form fits are
 	 *  deterministic to rounding, not to the bit). */
 	bool sameAs(const Wall& o, double eps = 1e-9) const;
+	/** True only when the point lies further than `d` from every point of the slab: outside
+	 *  the centre line's bounding box grown by thickness / 2 + d (with a relative margin of
+	 *  1e-9 for rounding). A cheap reject before the exact geometry below; false says nothing. */
+	bool farFrom(double x, double y, double d) const;
 	/** The slab as a rectangle (overlap with legs, eq. 16). */
 	OrientedRect rect() const;
 
@@ -30,13 +34,22 @@ struct Wall
 		double excess;  ///< distance past the extent along the line (0 within [0, length])
 		double normal;  ///< the face's outward normal angle, in (-pi, pi]
 	};
+	/** The centre line's length and unit direction (a degenerate wall points along x): what
+	 *  every query below needs, computed once for many points by the overloads taking it. */
+	struct Frame
+	{
+		double len, ux, uy;
+	};
+	Frame frame() const;
 	/** The point against face `side` (+1 or -1). */
-	FaceHit face(double x, double y, int side) const;
+	FaceHit face(double x, double y, int side) const { return face(frame(), x, y, side); }
+	FaceHit face(const Frame& fr, double x, double y, int side) const;
 	/** The point against any of the four faces: `f` = +1 or -1 a long face (as face()), +2 the
 	 *  end cap at (x1, y1) (outward normal along the direction), -2 the one at (x0, y0). For a
 	 *  cap, `across` is the signed distance from the cap's line (positive outside), `along` the
 	 *  offset from the centre line and `excess` how far that offset exceeds thickness / 2. */
-	FaceHit hit(double x, double y, int f) const;
+	FaceHit hit(double x, double y, int f) const { return hit(frame(), x, y, f); }
+	FaceHit hit(const Frame& fr, double x, double y, int f) const;
 	static constexpr int FACES[4] = {1, -1, 2, -2};
 	/** The point against the face on its side of the centre line (the nearer face). */
 	FaceHit nearestFace(double x, double y) const;

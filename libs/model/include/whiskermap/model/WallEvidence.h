@@ -50,12 +50,18 @@ class WallEvidence
 	{
 		double w = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
 	};
+	/** The unit normal at angle refNormal + d (computed once per d for the two below). */
+	struct Normal
+	{
+		double x, y;
+	};
+	Normal normalAt(double d) const;
 	/** Position cost (sum across^2 / sigma_r^2) and angle cost of the folded contacts for a wall
-	 *  whose face +1 (reference side) has normal angle refNormal + d and whose centre line
-	 *  passes at offset c from the anchor along that normal. */
-	double cost(double d, double c, double thickness) const;
-	/** The offset c minimising cost() at yaw offset d. */
-	double bestOffset(double d, double thickness) const;
+	 *  whose face +1 (reference side) has normal n = normalAt(d) and whose centre line passes
+	 *  at offset c from the anchor along that normal. */
+	double cost(double d, const Normal& n, double c, double thickness) const;
+	/** The offset c minimising cost() at the normal n. */
+	double bestOffset(const Normal& n, double thickness) const;
 
 	double m_ax = 0, m_ay = 0, m_phi = 0;  ///< anchor point and reference normal (face index 0)
 	std::array<Face, 2> m_face{};  ///< 0: the reference face, 1: the opposite one
