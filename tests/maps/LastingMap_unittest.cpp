@@ -14,6 +14,8 @@
 #include <whiskermap/world/WhiskerSimulator.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -308,4 +310,44 @@ TEST(LastingMap, SweepsAnnealedInBatchesFindTheTablesOnASparsePath)
 	const auto found = m.map->mapObjects();
 	EXPECT_EQ(found.size(), world.tables.size());
 	for (const auto& t : world.tables) EXPECT_EQ(countNear(found, t, 0.01, 1), 1u) << "table at " << t.x << ", " << t.y;
+}
+
+// Stock tools (rbpf-slam) save the map with saveMetricMapRepresentationToFile and never call
+// annealPending(): the files hold the map with its pending sweeps annealed (on a copy), and
+// the map keeps them pending. Checked where the pending contacts change the map's tables, so
+// saving the unannealed map would write another map_tables.csv.
+TEST(LastingMap, SavedRepresentationAnnealsThePendingSweepsOnACopy)
+{
+	const std::string base = SRC + "/config/worlds/eval/sparse/seed1";
+	const auto world = world::World::load(base + ".ini");
+	const auto noise = world::NoisePreset::load(SRC + "/config/noise/default.ini");
+	Map m(TMode::Lasting);
+	m.map->insertionOptions.lasting.batch_sweeps = 3;
+	world::WhiskerSimulator sim(world, scratchbot(), noise, 1);
+	const auto& lasting = m.map->lastingMap();
+	const std::string dir = ::testing::TempDir();
+	const auto read = [](const std::string& path) {
+		std::ifstream in(path);
+		return std::string(std::istreambuf_iterator<char>(in), {});
+	};
+	bool checked = false;
+	for (const auto& pose : world::Trajectory::readPathFile(base + ".path"))
+	{
+		if (!sim.poseIsFree(pose)) continue;
+		m.insert(sim, pose);
+		if (lasting.pendingSweeps() == 0) continue;
+		CHierarchicalObjectMap copy(*m.map);
+		copy.annealPending();
+		if (copy.mapObjects(true).size() == m.map->mapObjects(true).size()) continue;
+		const uint32_t pending = lasting.pendingSweeps();
+		m.map->saveMetricMapRepresentationToFile(dir + "saved");
+		copy.saveMetricMapRepresentationToFile(dir + "annealed");
+		EXPECT_EQ(lasting.pendingSweeps(), pending);
+		EXPECT_FALSE(read(dir + "saved_map_tables.csv").empty());
+		EXPECT_EQ(read(dir + "saved_map_tables.csv"), read(dir + "annealed_map_tables.csv"));
+		EXPECT_EQ(read(dir + "saved_map_candidates.csv"), read(dir + "annealed_map_candidates.csv"));
+		checked = true;
+		break;
+	}
+	EXPECT_TRUE(checked);
 }

@@ -335,6 +335,16 @@ double CHierarchicalObjectMap::internal_computeObservationLikelihood(
 
 void CHierarchicalObjectMap::saveMetricMapRepresentationToFile(const std::string& prefix) const
 {
+	if (lasting() && m_lasting.pendingSweeps() > 0)
+	{
+		// Stock tools (rbpf-slam's final map) save without calling annealPending(): the files
+		// hold the map as annealPending() would leave it, annealed on a copy; this map keeps
+		// its sweeps pending, so what it does next is unchanged.
+		CHierarchicalObjectMap annealed(*this);
+		annealed.annealPending();
+		annealed.saveMetricMapRepresentationToFile(prefix);
+		return;
+	}
 	const bool withClass = !modelParams.classes.empty();
 	MapCsv::writeObjects(prefix + "_map_tables.csv", mapObjects(lasting()), withClass, lasting());
 	MapCsv::writeObjects(prefix + "_map_candidates.csv", candidateObjects(lasting()), withClass, lasting());
