@@ -1,6 +1,7 @@
 // The wall moves (doc/sampler.md, "Walls"): each move and its declared reverse give back the
 // same board with opposite changes of logJoint and opposite log proposal ratios; the
 // data-driven birth takes a line of wall contacts from the legs that held them.
+#include <whiskermap/inference/TableProposals.h>
 #include <whiskermap/inference/WallProposals.h>
 #include <whiskermap/inference/moves/WallBirthDeath.h>
 #include <whiskermap/inference/moves/WallLink.h>
@@ -121,6 +122,35 @@ TEST(WallMoves, BirthTakesContactsFromLegs)
 	EXPECT_EQ(bb.legCount(), 0u);
 	EXPECT_EQ(bb.shapeletsOfWall(bb.shapeletWall(0)).size(), 5u);
 	EXPECT_FALSE(std::isfinite(birth.logReverse));  // the death leaves them to no cause, not to legs
+}
+
+// The birth and the death score their change from local pieces (inliers unlinked, free legs
+// removed, logOddsWall): the same as the whole joint's change on a board where the wall's
+// contacts are held by free legs, by a table's leg (which stays, standing in the new wall,
+// with its table), and where a leg the birth does not touch stands in the wall too.
+TEST(WallMoves, BirthAndDeathChangesMatchTheJointOnAMixedBoard)
+{
+	WallBoard w(6);
+	model::Blackboard& bb = w.b.bb;
+	// A contact on the wall's line facing the other way: not an inlier; its leg stays.
+	std::vector<obs::Shapelet> shapelets(bb.shapelets().begin(), bb.shapelets().end());
+	obs::Shapelet odd = shapelets[3];
+	odd.x += 0.12, odd.normal = -M_PI_2;
+	shapelets.push_back(odd);
+	bb.reset(shapelets);
+	for (const size_t s : {0, 1, 6}) bb.setShapeletParent(s, bb.addLeg(w.b.ctx.newLegFor(s)));
+	const Id tableLeg = bb.addLeg(w.b.ctx.newLegFor(2));
+	bb.setShapeletParent(2, tableLeg);
+	bb.setLegParent(tableLeg, bb.addTable(inference::tableWithLegAt(w.b.P, bb.leg(tableLeg), 0, 0, 0)));
+	inference::moves::WallBirthDeath move(w.b.P);
+	const size_t legs = bb.legCount();
+	applied(w.b, move, [&] { return move.birth(w.b.ctx, 4); });
+	ASSERT_EQ(bb.wallCount(), 1u);
+	EXPECT_EQ(bb.legCount(), legs - 2);  // the two free legs went, the table's and the odd one stay
+	EXPECT_TRUE(bb.hasLeg(tableLeg));
+	EXPECT_NE(bb.shapeletParent(6), NONE);
+	applied(w.b, move, [&] { return move.death(w.b.ctx, bb.shapeletWall(0)); });
+	EXPECT_EQ(bb.wallCount(), 0u);
 }
 
 TEST(WallMoves, ReleaseThenLink)

@@ -15,26 +15,39 @@ namespace
 constexpr double NO_REVERSE = -std::numeric_limits<double>::infinity();
 }  // namespace
 
+// The change of logJoint from its local pieces, one step at a time (each exact for its step):
+// the inliers unlinked from their legs or walls (eq. 12: their own terms only), the free legs
+// left explaining nothing removed (eq. 20: logOddsLeg), the wall added with the inliers
+// (eq. 20: logOddsWall). Tested against logJoint differences (WallMoves_unittest.cpp).
 std::optional<Proposal> WallBirthDeath::birth(MoveContext& ctx, size_t seed)
 {
 	model::Blackboard& bb = ctx.bb;
 	const std::optional<WallCandidate> c = proposeWall(bb, seed);
 	if (!c) return std::nullopt;
 	m_backup = bb;
-	const double before = model::logJoint(bb);
+	double change = 0;
 	bool wasFree = true;
-	std::vector<Id> left;
-	const Id w = bb.addWall(c->wall);
+	m_left.clear();
 	for (const Id s : c->inliers)
 	{
 		const auto i = static_cast<size_t>(s);
 		wasFree = wasFree && !bb.explained(i);
-		if (bb.shapeletParent(i) != NONE) left.push_back(bb.shapeletParent(i));
-		bb.setShapeletWall(i, w);
+		if (bb.shapeletParent(i) != NONE) m_left.push_back(bb.shapeletParent(i));
+		change -= model::logShapeletLinked(bb, i);
+		bb.setShapeletParent(i, NONE);
+		bb.setShapeletWall(i, NONE);
+		change += model::logShapeletLinked(bb, i);
 	}
-	for (const Id l : left)  // free legs left explaining nothing go with the move
-		if (bb.hasLeg(l) && !bb.explains(l) && bb.leg(l).parent == NONE) bb.removeLeg(l);
-	Proposal p{Move::Parent, model::logJoint(bb) - before};
+	for (const Id l : m_left)  // free legs left explaining nothing go with the move
+		if (bb.hasLeg(l) && !bb.explains(l) && bb.leg(l).parent == NONE)
+		{
+			change -= model::logOddsLeg(bb, l);
+			bb.removeLeg(l);
+		}
+	const Id w = bb.addWall(c->wall);
+	for (const Id s : c->inliers) bb.setShapeletWall(static_cast<size_t>(s), w);
+	change += model::logOddsWall(bb, w);
+	Proposal p{Move::Parent, change};
 	p.logReverse = wasFree ? 0 : NO_REVERSE;
 	return p;
 }
@@ -46,9 +59,8 @@ std::optional<Proposal> WallBirthDeath::death(MoveContext& ctx, Id w)
 	m_backup = bb;
 	const model::Wall wall = bb.wall(w);
 	const std::vector<Id> shapelets = bb.shapeletsOfWall(w);
-	const double before = model::logJoint(bb);
+	Proposal p{Move::Death, -model::logOddsWall(bb, w)};  // eq. 20: its shapelets fall to the null cause
 	bb.removeWall(w);
-	Proposal p{Move::Death, model::logJoint(bb) - before};
 	p.logReverse = NO_REVERSE;
 	for (const Id s : shapelets)
 	{

@@ -83,18 +83,21 @@ std::optional<Proposal> WallMerge::merge(MoveContext& ctx, Id w, Id other)
 {
 	model::Blackboard& bb = ctx.bb;
 	m_backup = bb;
-	const double before = model::logJoint(bb);
+	// The change of logJoint from local pieces (eq. 20), one step at a time: both walls removed
+	// (their shapelets to the null cause), the merged wall added with them all.
 	const WallEvidence merged = mergeEvidence(bb.wallEvidence(w), bb.wallEvidence(other));
 	const std::vector<Id> moved = bb.shapeletsOfWall(other);
 	const model::Wall keep = bb.wall(w);
+	double change = -model::logOddsWall(bb, other);
 	bb.removeWall(other);
+	change -= model::logOddsWall(bb, w);
 	bb.removeWall(w);
 	const Id id = bb.addWall(keep, merged);  // the same slot: removed last, reused first
 	for (const Id s : moved) bb.setShapeletWall(static_cast<size_t>(s), id);
 	for (const Id s : m_backup.shapeletsOfWall(w)) bb.setShapeletWall(static_cast<size_t>(s), id);
 	model::Wall fitted;
 	if (fitWall(bb, id, fitted)) bb.setWall(id, fitted);
-	Proposal p{Move::Refit, model::logJoint(bb) - before};
+	Proposal p{Move::Refit, change + model::logOddsWall(bb, id)};
 	p.logReverse = -std::numeric_limits<double>::infinity();
 	return p;
 }

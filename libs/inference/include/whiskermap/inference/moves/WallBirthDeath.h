@@ -27,5 +27,6 @@ class WallBirthDeath
 
    private:
 	model::Blackboard m_backup;
+	std::vector<model::Id> m_left;  ///< legs the inliers leave (scratch)
 };
 }  // namespace whiskermap::inference::moves
