@@ -265,21 +265,30 @@ TEST(LastingMap, RigidPoseIsCloserToTheTruthOnASparsePath)
 	EXPECT_LT(rigid, 0.0025);  // whisker-eval on the same run: 1.7 mm (the model's pose: 3.4 mm)
 }
 
+/** The sparse evaluation path of world seed1 at default noise, into a lasting map that anneals
+ *  its sweeps in batches of 3. */
+struct SparseInBatches
+{
+	const std::string base = SRC + "/config/worlds/eval/sparse/seed1";
+	world::World world = world::World::load(base + ".ini");
+	std::vector<CPose2D> path = world::Trajectory::readPathFile(base + ".path");
+	world::WhiskerSimulator sim{world, scratchbot(), world::NoisePreset::load(SRC + "/config/noise/default.ini"), 1};
+	Map m{TMode::Lasting};
+	SparseInBatches() { m.map->insertionOptions.lasting.batch_sweeps = 3; }
+};
+
 // Sweeps annealed together (insertOpts batch_sweeps): a sweep's contacts join the map at once,
 // unexplained, and are annealed with those of the next sweeps when the batch is full, or at
 // annealPending(). Batches of 3 on the sparse path find every table as single sweeps do.
 TEST(LastingMap, SweepsAnnealedInBatchesFindTheTablesOnASparsePath)
 {
-	const std::string base = SRC + "/config/worlds/eval/sparse/seed1";
-	const auto world = world::World::load(base + ".ini");
-	const auto path = world::Trajectory::readPathFile(base + ".path");
-	const auto noise = world::NoisePreset::load(SRC + "/config/noise/default.ini");
-	Map m(TMode::Lasting);
-	m.map->insertionOptions.lasting.batch_sweeps = 3;
-	world::WhiskerSimulator sim(world, scratchbot(), noise, 1);
+	SparseInBatches b;
+	const auto& world = b.world;
+	auto& sim = b.sim;
+	Map& m = b.m;
 	const auto& lasting = m.map->lastingMap();
 	bool sawPending = false, sawAnnealed = false;
-	for (const auto& pose : path)
+	for (const auto& pose : b.path)
 	{
 		if (!sim.poseIsFree(pose)) continue;
 		const uint32_t before = lasting.pendingSweeps();
@@ -318,12 +327,9 @@ TEST(LastingMap, SweepsAnnealedInBatchesFindTheTablesOnASparsePath)
 // saving the unannealed map would write another map_tables.csv.
 TEST(LastingMap, SavedRepresentationAnnealsThePendingSweepsOnACopy)
 {
-	const std::string base = SRC + "/config/worlds/eval/sparse/seed1";
-	const auto world = world::World::load(base + ".ini");
-	const auto noise = world::NoisePreset::load(SRC + "/config/noise/default.ini");
-	Map m(TMode::Lasting);
-	m.map->insertionOptions.lasting.batch_sweeps = 3;
-	world::WhiskerSimulator sim(world, scratchbot(), noise, 1);
+	SparseInBatches b;
+	auto& sim = b.sim;
+	Map& m = b.m;
 	const auto& lasting = m.map->lastingMap();
 	const std::string dir = ::testing::TempDir();
 	const auto read = [](const std::string& path) {
@@ -331,7 +337,7 @@ TEST(LastingMap, SavedRepresentationAnnealsThePendingSweepsOnACopy)
 		return std::string(std::istreambuf_iterator<char>(in), {});
 	};
 	bool checked = false;
-	for (const auto& pose : world::Trajectory::readPathFile(base + ".path"))
+	for (const auto& pose : b.path)
 	{
 		if (!sim.poseIsFree(pose)) continue;
 		m.insert(sim, pose);
