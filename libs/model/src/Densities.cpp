@@ -192,9 +192,8 @@ double wallFaceCost(const obs::Shapelet& s, const Wall& w, const Wall::Frame& fr
 }
 
 /** The face of eq. 22's minimum for contact s (the first of Wall::FACES on a tie) and its cost. */
-std::pair<int, double> bestWallFaceCost(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
+std::pair<int, double> bestWallFaceCost(const obs::Shapelet& s, const Wall& w, const Wall::Frame& fr, const ModelParams& p)
 {
-	const Wall::Frame fr = w.frame();
 	std::pair<int, double> best{Wall::FACES[0], wallFaceCost(s, w, fr, Wall::FACES[0], p)};
 	for (const int f : Wall::FACES)
 		if (f != best.first)
@@ -203,11 +202,15 @@ std::pair<int, double> bestWallFaceCost(const obs::Shapelet& s, const Wall& w, c
 }
 }  // namespace
 
-int bestWallFace(const obs::Shapelet& s, const Wall& w, const ModelParams& p) { return bestWallFaceCost(s, w, p).first; }
+int bestWallFace(const obs::Shapelet& s, const Wall& w, const ModelParams& p) { return bestWallFace(s, w, w.frame(), p); }
+int bestWallFace(const obs::Shapelet& s, const Wall& w, const Wall::Frame& fr, const ModelParams& p)
+{
+	return bestWallFaceCost(s, w, fr, p).first;
+}
 
 double logShapeletGivenWall(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
 {
-	const double best = bestWallFaceCost(s, w, p).second;
+	const double best = bestWallFaceCost(s, w, w.frame(), p).second;
 	return core::cachedLog(p.alpha_S) - best - sq((w.texture - s.texture) / p.sigma_tau);  // eq. 22
 }
 

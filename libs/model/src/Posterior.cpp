@@ -223,12 +223,8 @@ double logOddsWall(const Blackboard& bb, Id wall)
 	for (const Id s : bb.shapeletsOfWall(wall)) sum += logShapeletLinked(bb, static_cast<size_t>(s)) - logShapeletNull(p);
 	int legs = 0;
 	const OrientedRect r = w.rect();
-	for (Id l = 0; l < bb.legIdBound(); l++)
-	{
-		if (!bb.hasLeg(l)) continue;
-		const OrientedRect leg = legRect(bb.leg(l));
-		legs += !w.farFrom(leg.cx, leg.cy, std::hypot(leg.hx, leg.hy)) && leg.overlaps(r);
-	}
+	for (Id l = 0; l < bb.legIdBound(); l++)  // a leg lies within maxLegRadius of its centre
+		legs += bb.hasLeg(l) && !w.farFrom(bb.leg(l).x, bb.leg(l).y, bb.maxLegRadius()) && legRect(bb.leg(l)).overlaps(r);
 	return sum + logOverlap(legs, p);
 }
 

@@ -13,24 +13,25 @@ double sq(double v) { return v * v; }
 
 void WallEvidence::add(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
 {
-	const int side = bestWallFace(s, w, p);
+	const Wall::Frame fr = w.frame();
+	const int side = bestWallFace(s, w, fr, p);
 	const bool cap = side == 2 || side == -2;
 	// The first contact anchors the moments; the reference normal is its face's (face +1's when
 	// it lies on an end cap).
 	if (m_count == 0)
-		m_ax = s.x, m_ay = s.y, m_phi = w.face(s.x, s.y, cap ? 1 : side).normal, m_lox = m_hix = s.x, m_loy = m_hiy = s.y;
+		m_ax = s.x, m_ay = s.y, m_phi = w.face(fr, s.x, s.y, cap ? 1 : side).normal, m_lox = m_hix = s.x, m_loy = m_hiy = s.y;
 	const double qx = s.x - m_ax, qy = s.y - m_ay;
 	if (cap)
 	{
 		// An end cap's contact: its position and normal cost (eq. 22, isotropic as every folded
 		// contact) frozen as folded; its texture and extent below, as a long face's.
-		const Wall::FaceHit h = w.hit(s.x, s.y, side);
+		const Wall::FaceHit h = w.hit(fr, s.x, s.y, side);
 		m_capCost += (sq(h.across) + sq(h.excess)) / sq(p.sigma_r) + sq(core::wrapToPi(s.normal - h.normal) / p.sigma_theta);
 	}
 	else
 	{
 		// Face index against the reference normal: 0 when the face's normal is within 90 deg of it.
-		const double faceNormal = w.face(s.x, s.y, side).normal;
+		const double faceNormal = w.face(fr, s.x, s.y, side).normal;
 		const int k = std::cos(faceNormal - m_phi) >= 0 ? 0 : 1;
 		const double wr = 1 / sq(p.sigma_r);
 		Face& f = m_face[static_cast<size_t>(k)];

@@ -23,8 +23,9 @@ bool nearFace(const model::Blackboard& bb, Id w, size_t s)
 	const obs::Shapelet& sh = bb.shapelets()[s];
 	const model::Wall& wall = bb.wall(w);
 	if (wall.farFrom(sh.x, sh.y, p.parent_gate)) return false;  // within the gate of a face is within it of the slab
-	const int side = model::bestWallFace(sh, wall, p);
-	const model::Wall::FaceHit h = wall.hit(sh.x, sh.y, side);
+	const model::Wall::Frame fr = wall.frame();
+	const int side = model::bestWallFace(sh, wall, fr, p);
+	const model::Wall::FaceHit h = wall.hit(fr, sh.x, sh.y, side);
 	return std::hypot(h.across, h.excess) <= p.parent_gate &&
 		   std::abs(core::wrapToPi(sh.normal - h.normal)) <= 3 * p.sigma_theta;
 }

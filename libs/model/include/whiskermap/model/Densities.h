@@ -81,6 +81,8 @@ double logShapeletGivenWall(const obs::Shapelet& s, const Wall& w, const ModelPa
 /** The face (+1 or -1 a long face, +2 or -2 an end cap: Wall::hit) of eq. 22's minimum for
  *  contact s. */
 int bestWallFace(const obs::Shapelet& s, const Wall& w, const ModelParams& p);
+/** The same with the wall's frame (Wall::frame()) computed once by a caller querying it again. */
+int bestWallFace(const obs::Shapelet& s, const Wall& w, const Wall::Frame& fr, const ModelParams& p);
 
 /** Cell probability of a wall (eq. 23): (2 delta)^4 c_W exp(-length / lambda_W), a density over
  *  (centre x, centre y, yaw, length) with an exponential length prior. */
