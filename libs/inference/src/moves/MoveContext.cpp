@@ -6,6 +6,7 @@
 #include <whiskermap/model/Posterior.h>
 
 #include <algorithm>
+#include <limits>
 
 namespace whiskermap::inference::moves
 {
@@ -139,6 +140,44 @@ bool MoveContext::refitInPlace(Id l, double& gain)
 	gain += model::logOddsLeg(bb, l);
 	return true;
 }
+bool MoveContext::drawRefit(Id l, double& gain, double& logForward)
+{
+	const Id parent = bb.leg(l).parent;
+	Leg fit;
+	if (!fittedLeg(l, parent == model::NONE ? nullptr : &bb.table(parent), fit)) return false;
+	Leg drawn = fit;
+	drawn.x += sp.leg_position_noise * rng.gaussian();
+	drawn.y += sp.leg_position_noise * rng.gaussian();
+	drawn.theta += sp.leg_angle_noise * rng.gaussian();
+	logForward += logDrawnAbout(drawn, fit);
+	gain -= model::logOddsLeg(bb, l);
+	bb.setLeg(l, drawn);
+	gain += model::logOddsLeg(bb, l);
+	return true;
+}
+
+double MoveContext::logRefitTo(Id l, const Leg& pose)
+{
+	const Id parent = bb.leg(l).parent;
+	Leg fit;
+	if (!fittedLeg(l, parent == model::NONE ? nullptr : &bb.table(parent), fit))
+		return -std::numeric_limits<double>::infinity();
+	return logDrawnAbout(pose, fit);
+}
+
+double MoveContext::logDrawnAbout(const Leg& leg, const Leg& fit) const
+{
+	if (leg.texture != fit.texture || leg.wx != fit.wx || leg.wy != fit.wy) return -std::numeric_limits<double>::infinity();
+	return logNoise(leg.x - fit.x, sp.leg_position_noise) + logNoise(leg.y - fit.y, sp.leg_position_noise) +
+		   logNoise(core::angleDiff(leg.theta, fit.theta, 2 * M_PI), sp.leg_angle_noise);
+}
+
+double MoveContext::logNoise(double d, double sigma)
+{
+	if (!(sigma > 0)) return d == 0 ? 0.0 : -std::numeric_limits<double>::infinity();
+	return -0.5 * (d / sigma) * (d / sigma) - std::log(sigma * std::sqrt(2 * M_PI));
+}
+
 bool MoveContext::atFit(Id l)
 {
 	if (broad()) return false;

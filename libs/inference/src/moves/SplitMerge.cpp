@@ -17,19 +17,29 @@ constexpr double NO_REVERSE = -std::numeric_limits<double>::infinity();
 Proposal SplitMerge::split(MoveContext& ctx, size_t s)
 {
 	model::Blackboard& bb = ctx.bb;
+	const bool stochastic = ctx.stochasticRefits();
 	m_split = true;
 	m_shapelet = s;
 	m_leg = bb.shapeletParent(s);
 	m_oldLeg = bb.leg(m_leg);
-	const bool atFit = ctx.atFit(m_leg);
-	double gain = -model::logShapeletLinkGain(bb, s, m_leg);
+	const bool atFit = !stochastic && ctx.atFit(m_leg);
+	Proposal p{Move::Child, -model::logShapeletLinkGain(bb, s, m_leg)};
 	bb.setShapeletParent(s, model::NONE);
-	ctx.refitInPlace(m_leg, gain);
+	const bool drew = stochastic ? ctx.drawRefit(m_leg, p.logTarget, p.logForward) : ctx.refitInPlace(m_leg, p.logTarget);
 	m_other = bb.addLeg(ctx.newLegFor(s));
 	bb.setShapeletParent(s, m_other);
-	Proposal p{Move::Child, gain + model::logOddsLeg(bb, m_other)};
-	p.logForward = LegBirthDeath::logBirthDensity(ctx, s, bb.leg(m_other));
-	p.logReverse = atFit ? 0 : NO_REVERSE;
+	p.logTarget += model::logOddsLeg(bb, m_other);
+	p.logForward += LegBirthDeath::logBirthDensity(ctx, s, bb.leg(m_other));
+	if (!stochastic)
+		p.logReverse = atFit ? 0 : NO_REVERSE;
+	else if (!drew)
+		p.logReverse = NO_REVERSE;
+	else  // the merge's refit of the old leg with s back on it
+	{
+		bb.setShapeletParent(s, m_leg);
+		p.logReverse = ctx.logRefitTo(m_leg, m_oldLeg);
+		bb.setShapeletParent(s, m_other);
+	}
 	return p;
 }
 
@@ -44,15 +54,15 @@ std::optional<Proposal> SplitMerge::merge(MoveContext& ctx, Id l, Id other)
 	m_leg = l, m_other = other;
 	m_oldLeg = bb.leg(l), m_oldOther = bb.leg(other);
 	m_oldEvidence = bb.evidence(l), m_otherEvidence = bb.evidence(other);
+	const bool stochastic = ctx.stochasticRefits();
 	Proposal p{Move::Child};
 	p.logReverse = NO_REVERSE;
-	if (m_moved.size() == 1 && m_otherEvidence.empty() && m_oldOther.parent == model::NONE && ctx.atFit(l))
-	{
-		const size_t s = static_cast<size_t>(m_moved[0]);
-		if (m_oldOther.texture == bb.shapelets()[s].texture && m_oldOther.wx == ctx.mp.leg_width &&
-			m_oldOther.wy == m_oldOther.wx)
-			p.logReverse = LegBirthDeath::logBirthDensity(ctx, s, m_oldOther);
-	}
+	// The split of other's one contact: a birth's leg for it, l refitted without it.
+	const auto lone = m_moved.size() == 1 ? static_cast<size_t>(m_moved[0]) : size_t{0};
+	const bool splittable = m_moved.size() == 1 && m_otherEvidence.empty() && m_oldOther.parent == model::NONE &&
+							m_oldOther.texture == bb.shapelets()[lone].texture && m_oldOther.wx == ctx.mp.leg_width &&
+							m_oldOther.wy == m_oldOther.wx;
+	if (splittable && (stochastic || ctx.atFit(l))) p.logReverse = LegBirthDeath::logBirthDensity(ctx, lone, m_oldOther);
 	double gain = -model::logOddsLeg(bb, other);
 	bb.removeLeg(other);
 	for (const Id s : m_moved)
@@ -69,10 +79,16 @@ std::optional<Proposal> SplitMerge::merge(MoveContext& ctx, Id l, Id other)
 		bb.setEvidence(l, merged);
 		gain += model::logOddsLeg(bb, l);
 	}
-	if (!ctx.refitInPlace(l, gain))
+	if (!(stochastic ? ctx.drawRefit(l, gain, p.logForward) : ctx.refitInPlace(l, gain)))
 	{
 		undoMerge(ctx);
 		return std::nullopt;
+	}
+	if (stochastic && splittable)  // the split's refit of l without s
+	{
+		bb.setShapeletParent(lone, model::NONE);
+		p.logReverse += ctx.logRefitTo(l, m_oldLeg);
+		bb.setShapeletParent(lone, l);
 	}
 	p.logTarget = gain;
 	return p;

@@ -1,3 +1,4 @@
+#include <whiskermap/core/Angles.h>
 #include <whiskermap/inference/PoseFit.h>
 #include <whiskermap/inference/moves/LegRefit.h>
 #include <whiskermap/inference/moves/TableRefit.h>
@@ -18,17 +19,15 @@ std::optional<Proposal> TableRefit::propose(MoveContext& ctx, Id t)
 	for (const Id l : bb.legsOf(t)) m_savedLegs.emplace_back(l, bb.leg(l));
 	m_old = bb.table(t);
 	const double before = model::logJointAround(bb, t);
+	if (ctx.stochasticRefits()) return drawn(ctx, t, before);
 	bool valid = true;
 	for (int round = 0; round < 2 && valid; round++)
 	{
-		m_fitLegs.clear();
-		m_fitCorners.clear();
-		for (const auto& [l, saved] : m_savedLegs)
-			if (bb.explains(l)) m_fitLegs.push_back(&bb.leg(l)), m_fitCorners.push_back(bb.leg(l).corner);
-		if (m_fitLegs.empty()) return std::nullopt;  // nothing to fit (and nothing changed yet)
 		// The plain refit fits the pose from the old table both rounds; the resize from its
 		// own last fit, whose size it changed.
-		const model::Table& start = m_resize && round > 0 ? bb.table(t) : m_old;
+		model::Table fitted;
+		if (!fitToLegs(ctx, m_resize && round > 0 ? bb.table(t) : m_old, fitted))
+			return std::nullopt;  // nothing to fit (and nothing changed yet)
 		if (ctx.broad())  // one random-walk step of the table; its legs stay (broad proposals)
 		{
 			model::Table stepped = m_old;
@@ -36,8 +35,6 @@ std::optional<Proposal> TableRefit::propose(MoveContext& ctx, Id t)
 			bb.setTable(t, stepped);
 			break;
 		}
-		model::Table fitted = fitTable(ctx.mp, start, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
-		if (m_resize) fitted = fitTableSize(ctx.mp, fitted, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
 		bb.setTable(t, fitted);
 		for (const auto& [l, saved] : m_savedLegs)
 		{
@@ -70,6 +67,67 @@ std::optional<Proposal> TableRefit::propose(MoveContext& ctx, Id t)
 	Proposal p{Move::Refit, model::logJointAround(bb, t) - before};
 	p.logReverse = logReverse;
 	return p;
+}
+
+bool TableRefit::fitToLegs(const MoveContext& ctx, const model::Table& start, model::Table& out)
+{
+	const model::Blackboard& bb = ctx.bb;
+	m_fitLegs.clear();
+	m_fitCorners.clear();
+	for (const auto& [l, saved] : m_savedLegs)
+		if (bb.explains(l)) m_fitLegs.push_back(&bb.leg(l)), m_fitCorners.push_back(bb.leg(l).corner);
+	if (m_fitLegs.empty()) return false;
+	out = fitTable(ctx.mp, start, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
+	if (m_resize) out = fitTableSize(ctx.mp, out, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
+	return true;
+}
+
+// The table drawn about its fit from the board as it is (and the reverse: the old table's
+// density about the fit from the new board); its legs that explain data stay where they are,
+// its invented legs go to the new corners, which the reverse undoes only if they stood at
+// the old ones.
+std::optional<Proposal> TableRefit::drawn(MoveContext& ctx, Id t, double before)
+{
+	model::Blackboard& bb = ctx.bb;
+	model::Table fit, back;
+	if (!fitToLegs(ctx, m_old, fit)) return std::nullopt;
+	model::Table d = fit;
+	const double sp = ctx.sp.leg_position_noise;
+	d.x += sp * ctx.rng.gaussian();
+	d.y += sp * ctx.rng.gaussian();
+	d.theta += ctx.sp.leg_angle_noise * ctx.rng.gaussian();
+	if (m_resize) d.d_length += sp * ctx.rng.gaussian(), d.d_width += sp * ctx.rng.gaussian();
+	Proposal p{Move::Refit};
+	p.logForward = logDrawnAbout(ctx, d, fit);
+	bb.setTable(t, d);
+	for (const auto& [l, saved] : m_savedLegs)
+	{
+		if (bb.explains(l)) continue;
+		model::Leg moved = saved;
+		model::tableCorner(m_old, saved.corner, ctx.mp, moved.x, moved.y);
+		if (moved.x != saved.x || moved.y != saved.y || m_old.theta != saved.theta)
+			p.logReverse = -std::numeric_limits<double>::infinity();
+		model::tableCorner(d, saved.corner, ctx.mp, moved.x, moved.y);
+		moved.theta = d.theta;
+		bb.setLeg(l, moved);
+	}
+	fitToLegs(ctx, d, back);  // the same legs: a fit exists
+	p.logReverse += logDrawnAbout(ctx, m_old, back);
+	p.logTarget = model::logJointAround(bb, t) - before;
+	return p;
+}
+
+double TableRefit::logDrawnAbout(const MoveContext& ctx, const model::Table& table, const model::Table& fit) const
+{
+	if (table.cls != fit.cls) return -std::numeric_limits<double>::infinity();
+	const double sp = ctx.sp.leg_position_noise;
+	double size = 0;
+	if (m_resize)
+		size = MoveContext::logNoise(table.d_length - fit.d_length, sp) + MoveContext::logNoise(table.d_width - fit.d_width, sp);
+	else if (table.d_length != fit.d_length || table.d_width != fit.d_width)
+		return -std::numeric_limits<double>::infinity();
+	return size + MoveContext::logNoise(table.x - fit.x, sp) + MoveContext::logNoise(table.y - fit.y, sp) +
+		   MoveContext::logNoise(core::angleDiff(table.theta, fit.theta, 2 * M_PI), ctx.sp.leg_angle_noise);
 }
 
 void TableRefit::finish(MoveContext& ctx, bool accepted)

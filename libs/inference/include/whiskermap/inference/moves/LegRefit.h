@@ -11,10 +11,8 @@ namespace whiskermap::inference::moves
  *  polish uses it as a greedy improvement, where densities play no part. With broad
  *  proposals it is a symmetric random-walk step (MoveContext::randomWalk; logReverse = 0).
  *  Under the reversible-jump acceptance at finite beta it is stochastic, so that it has a
- *  reverse: the fit plus N(0, leg_position_noise^2) per axis and N(0, leg_angle_noise^2) in
- *  yaw; logForward is that density of the new pose about the fit from the old board,
- *  logReverse the density of the old pose about the fit from the new board (its texture must
- *  be the fit's). */
+ *  reverse (MoveContext::drawRefit): logForward is the density of the new pose about the fit
+ *  from the old board, logReverse that of the old pose about the fit from the new board. */
 class LegRefit
 {
    public:
@@ -25,9 +23,6 @@ class LegRefit
 	/** 0 if `before` and `after` have the same pose and texture, else -inf: the reverse
 	 *  density of a deterministic refit. */
 	static double logReverseOfRefit(const model::Leg& before, const model::Leg& after);
-	/** log density of a stochastic refit drawing `leg` about `fit` (texture: the fit's, else
-	 *  -inf); a zero noise makes its coordinate a point mass (0 at the fit, else -inf). */
-	static double logDrawnAbout(const MoveContext& ctx, const model::Leg& leg, const model::Leg& fit);
 
    private:
 	model::Id m_leg = model::NONE;

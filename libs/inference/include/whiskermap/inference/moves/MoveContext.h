@@ -47,6 +47,12 @@ class MoveContext
 	bool greedy() const { return std::isinf(beta); }
 	/** The broad baseline (SamplerParams::proposals, doc/sampler.md "Broad proposals"). */
 	bool broad() const { return sp.proposals == Proposals::Broad; }
+	/** Refits draw about their fits (doc/sampler.md, "Stochastic refits"): under the
+	 *  reversible-jump acceptance at finite beta, with data-driven proposals. */
+	bool stochasticRefits() const
+	{
+		return sp.acceptance == AcceptanceRule::ReversibleJump && !greedy() && !broad();
+	}
 	/** Tells the watcher (if any) that the board changed and the change stays. */
 	void changed()
 	{
@@ -84,6 +90,20 @@ class MoveContext
 	/** Moves leg l to its fitted pose (if valid: returns true) and adds the change of logJoint
 	 *  to `gain` (local, eq. 20 before and after). */
 	bool refitInPlace(model::Id l, double& gain);
+	/** The stochastic refit of leg l (stochasticRefits()): its fit (fittedLeg, with its
+	 *  parent's corner) plus N(0, leg_position_noise^2) per axis and N(0, leg_angle_noise^2)
+	 *  in yaw. Adds the change of logJoint to `gain` (eq. 20) and the draw's log density to
+	 *  `logForward`; false (board unchanged) if the leg has no valid fit. */
+	bool drawRefit(model::Id l, double& gain, double& logForward);
+	/** log density with which drawRefit(l) on the board as it is now would draw `pose`
+	 *  (-inf without a valid fit): the reverse of a stochastic refit. */
+	double logRefitTo(model::Id l, const model::Leg& pose);
+	/** log density of `leg` drawn about `fit` by a stochastic refit (texture and size: the
+	 *  fit's, else -inf); a zero noise makes its coordinate a point mass (0 at the fit). */
+	double logDrawnAbout(const model::Leg& leg, const model::Leg& fit) const;
+	/** log N(d; 0, sigma^2) of a stochastic refit's offset d; sigma = 0: a point mass at 0
+	 *  (0 there, -inf elsewhere; never NaN, which an acceptance would take for 1). */
+	static double logNoise(double d, double sigma);
 	/** True if refitInPlace would leave leg l where it is (to 1e-12; an invalid fit leaves it):
 	 *  then a move that refits l can be undone by a move that refits it back. Broad: false
 	 *  (a random-walk step always moves). */

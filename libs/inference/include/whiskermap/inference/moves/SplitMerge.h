@@ -17,6 +17,9 @@ namespace whiskermap::inference::moves
  *    reverse is the split of other's one contact, exact when `other` was a free leg with one
  *    contact, nothing folded and a birth's width and texture, and l stood at its fit:
  *    logReverse = the birth density of other's pose; else -inf.
+ *  Under stochastic refits (MoveContext::stochasticRefits) the refitted leg is drawn about its
+ *  fit (its density joins logForward) and the reverse draws it back (its density of the old
+ *  pose joins logReverse), so neither needs the old leg at its fit.
  *  Both are judged on the exact local change of logJoint and undone exactly on rejection. */
 class SplitMerge
 {

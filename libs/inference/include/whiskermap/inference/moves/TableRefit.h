@@ -14,7 +14,14 @@ namespace whiskermap::inference::moves
  *  unless nothing moved (0). The resize (model key `size_moves`) is the same move with the
  *  table's size fitted too, after its pose, in each round (fitTableSize: eqs. 6 and 24).
  *  With broad proposals: one random-walk step of the table's pose (MoveContext::randomWalk),
- *  its legs that explain shapelets left where they are, logReverse = 0 (symmetric). */
+ *  its legs that explain shapelets left where they are, logReverse = 0 (symmetric).
+ *  Stochastic under the reversible-jump acceptance at finite beta (MoveContext::
+ *  stochasticRefits), so that it has a reverse: the table's fit to its legs that explain
+ *  shapelets plus N(0, leg_position_noise^2) per axis (and per size offset, for the resize)
+ *  and N(0, leg_angle_noise^2) in yaw; those legs stay (their own refits move them), its
+ *  invented legs move onto the new corners. logForward: the new table's density about the
+ *  fit from the old board; logReverse: the old table's about the fit from the new board (-inf
+ *  if an invented leg did not stand at its old corner). */
 class TableRefit
 {
    public:
@@ -26,6 +33,15 @@ class TableRefit
 	void finish(MoveContext& ctx, bool accepted);
 
    private:
+	/** Fits the table from `start` to its legs that explain shapelets (then its size, for the
+	 *  resize); false if none does. */
+	bool fitToLegs(const MoveContext& ctx, const model::Table& start, model::Table& out);
+	/** The stochastic refit (MoveContext::stochasticRefits). */
+	std::optional<Proposal> drawn(MoveContext& ctx, model::Id t, double before);
+	/** log density of `table` drawn about `fit` (the resize: its size too; else the sizes must
+	 *  be equal). */
+	double logDrawnAbout(const MoveContext& ctx, const model::Table& table, const model::Table& fit) const;
+
 	bool m_resize;
 	model::Id m_table = model::NONE;
 	model::Table m_old;
