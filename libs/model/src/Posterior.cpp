@@ -111,7 +111,7 @@ double wallOwnFactors(const Blackboard& bb, Id w)
 {
 	const ModelParams& p = bb.params();
 	const Wall& wall = bb.wall(w);
-	double sum = logWallPrior(wall, p) + wallEvidenceGain(bb, w);
+	double sum = logWallPrior(wall, p) + wallEvidenceGain(bb, w) + bb.swept().logWallFactor(wall, p);  // eq. 21
 	if (p.free_space && bb.sweptGrid()) sum += GridFreeSpace::logWallFactor(wall, *bb.sweptGrid(), p);
 	return sum;
 }
@@ -149,7 +149,7 @@ double logJoint(const Blackboard& bb)
 		boardPairs += o.board, contextPairs += o.context;
 	}
 	for (Id w = 0; w < bb.wallIdBound(); w++)
-		if (bb.hasWall(w)) sum += wallOwnFactors(bb, w);  // eqs. 23, 25
+		if (bb.hasWall(w)) sum += wallOwnFactors(bb, w);  // eqs. 21, 23, 25
 	for (size_t s = 0; s < bb.shapelets().size(); s++) sum += logShapeletLinked(bb, s);
 	return sum + logOverlap(boardPairs / 2 + contextPairs, p);
 }

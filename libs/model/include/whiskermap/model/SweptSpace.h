@@ -3,6 +3,7 @@
 #include <whiskermap/model/ModelParams.h>
 #include <whiskermap/model/OrientedRect.h>
 #include <whiskermap/model/Table.h>
+#include <whiskermap/model/Wall.h>
 #include <whiskermap/obs/SweptSector.h>
 
 #include <vector>
@@ -31,6 +32,17 @@ class SweptSpace
 	/** log phi_f of a solid rectangle (eq. 21): the sum over the sectors; 0 when the model's
 	 *  free_space is off. */
 	double logFactor(const OrientedRect& r, const ModelParams& p) const;
+
+	/** How deep segment (ax, ay)-(bx, by) reaches into sector `s`, metres: the largest
+	 *  SweptSector::depth along it. A sector of span <= pi is convex, so the segment's part
+	 *  inside it is one interval (found exactly) along which the depth is concave: its
+	 *  maximum by golden section. For a wider sector, a lower bound from 64 points. */
+	static double segmentPenetration(const obs::SweptSector& s, double ax, double ay, double bx, double by);
+
+	/** Eq. 21 for a wall (the per-pose mode; the lasting map's walls pay eq. 25 instead): its
+	 *  slab's depth in each sector taken as the deepest of its centre line and its two long
+	 *  faces (a lower bound within a quarter of its thickness); 0 when free_space is off. */
+	double logWallFactor(const Wall& w, const ModelParams& p) const;
 
 	/** Eq. 21 for the legs table `t` implies at its empty corners (counts[c] == 0): a square
 	 *  leg of the table's leg width and yaw centred on each such corner. */
