@@ -4,6 +4,7 @@
 // and fails to when the move's reverse density is dropped; the links, splits and merges that
 // refit legs declare their reverse wherever the leg they leave stays, and score the exact
 // change of logJoint.
+#include <whiskermap/inference/moves/LegBirthDeath.h>
 #include <whiskermap/inference/moves/LegRefit.h>
 #include <whiskermap/inference/moves/ShapeletLink.h>
 #include <whiskermap/inference/moves/SplitMerge.h>
@@ -355,4 +356,75 @@ TEST(StochasticRefits, SplitAndMergeOfALegOffItsFitHaveReverses)
 		checked++;
 	}
 	EXPECT_GE(checked, 30);
+}
+
+// Births and deaths on continuous poses: does one contact have a leg? The chain alternates a
+// leg's birth for the contact (the broad proposal: centre uniform on the disc of radius w about
+// it, yaw uniform; bounded, so the exact answer is a finite integral) and its death, judged by
+// the reversible-jump rule at beta = 1. The model's posterior odds of the leg are the integral
+// of exp(logOddsLeg) over the proposal's support per (2 delta)^3 cell (logJoint counts each
+// hypothesis as a cell's mass, eq. 19), by quadrature on a polar grid. The birth's density must
+// be taken per cell too (LegBirthDeath::logBirthMass); judged with the bare density the chain
+// charges the leg (2 delta)^3 once more (-11.7 nats at the defaults) and all but never keeps it.
+TEST(ReversibleJumpCells, LegBirthAndDeathSampleTheLegsExistence)
+{
+	model::ModelParams P;
+	P.alpha_S = 300;  // a contact's leg about as probable as none (the defaults give 1 - 1e-4)
+	const model::Table t{0.3, -0.2, 0.4, P.leg_width, P.texture};
+	const auto shapelets = test::touchTable(t, P, {{0, 0, 0.004}});
+	inference::SamplerParams broad;
+	broad.acceptance = inference::AcceptanceRule::ReversibleJump;
+	broad.proposals = inference::Proposals::Broad;
+	const inference::Acceptance acceptance(broad.acceptance);
+
+	// Exact: odds = sum over the grid of exp(logOddsLeg) * (area, yaw) element / (2 delta)^3.
+	test::ContextOnBoard q(P);
+	q.bb.reset(shapelets);
+	const obs::Shapelet& s = shapelets[0];
+	model::Leg leg;
+	leg.wx = leg.wy = P.leg_width, leg.texture = s.texture;
+	const Id l = q.bb.addLeg(leg);
+	q.bb.setShapeletParent(0, l);
+	const int NR = 60, NPHI = 120, NYAW = 180;
+	const double w = P.leg_width, cell = std::pow(2 * P.delta, 3);
+	double odds = 0;
+	for (int i = 0; i < NR; i++)
+		for (int j = 0; j < NPHI; j++)
+			for (int k = 0; k < NYAW; k++)
+			{
+				const double r = w * (i + 0.5) / NR, phi = 2 * M_PI * (j + 0.5) / NPHI;
+				leg.x = s.x + r * std::cos(phi), leg.y = s.y + r * std::sin(phi), leg.theta = 2 * M_PI * (k + 0.5) / NYAW;
+				q.bb.setLeg(l, leg);
+				odds += std::exp(model::logOddsLeg(q.bb, l)) * r * (w / NR) * (2 * M_PI / NPHI) * (2 * M_PI / NYAW) / cell;
+			}
+	const double exact = odds / (1 + odds);
+	ASSERT_GT(exact, 0.2);
+	ASSERT_LT(exact, 0.8);
+
+	for (const bool bare : {false, true})  // bare: the birth judged with its density, not its cell's mass
+	{
+		test::ContextOnBoard run(P);
+		run.bb.reset(shapelets);
+		MoveContext ctx(run.bb, run.P, broad, run.rng, acceptance);
+		ctx.result = &run.result;
+		const double perCell = 3 * std::log(2 * P.delta);
+		inference::moves::LegBirthDeath move;
+		constexpr int N = 200000;
+		int withLeg = 0;
+		for (int i = 0; i < N; i++)
+		{
+			const Id own = run.bb.shapeletParent(0);
+			Proposal p = own == NONE ? move.birthFor(ctx, 0) : *move.death(ctx, own);
+			if (bare) (own == NONE ? p.logForward : p.logReverse) -= perCell;
+			ctx.judge(move, p);
+			withLeg += run.bb.shapeletParent(0) != NONE;
+		}
+		const double chain = static_cast<double>(withLeg) / N;
+		std::printf("leg of one contact, broad births%s: P(leg) chain %.4f, exact %.4f\n",
+					bare ? " judged by their bare density" : "", chain, exact);
+		if (bare)
+			EXPECT_LT(chain, 0.01);
+		else
+			EXPECT_NEAR(chain, exact, 0.02);
+	}
 }

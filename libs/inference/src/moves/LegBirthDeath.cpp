@@ -1,4 +1,5 @@
 #include <whiskermap/core/Angles.h>
+#include <whiskermap/core/MathCache.h>
 #include <whiskermap/inference/moves/LegBirthDeath.h>
 #include <whiskermap/model/Densities.h>
 #include <whiskermap/model/Posterior.h>
@@ -41,7 +42,7 @@ Proposal LegBirthDeath::birthFor(MoveContext& ctx, size_t s)
 	m_leg = ctx.bb.addLeg(ctx.newLegFor(s));
 	ctx.bb.setShapeletParent(s, m_leg);
 	Proposal p{Move::Priming, model::logOddsLeg(ctx.bb, m_leg)};
-	p.logForward = logBirthDensity(ctx, s, ctx.bb.leg(m_leg));
+	p.logForward = logBirthMass(ctx, s, ctx.bb.leg(m_leg));
 	return p;
 }
 
@@ -82,7 +83,7 @@ std::optional<Proposal> LegBirthDeath::death(MoveContext& ctx, Id l)
 	{
 		const obs::Shapelet& sh = bb.shapelets()[static_cast<size_t>(own[0])];
 		if (leg.texture == sh.texture && leg.wx == ctx.mp.leg_width && leg.wy == leg.wx)
-			p.logReverse = logBirthDensity(ctx, static_cast<size_t>(own[0]), leg);
+			p.logReverse = logBirthMass(ctx, static_cast<size_t>(own[0]), leg);
 	}
 	else if (leg.parent != NONE && own.empty())
 	{
@@ -103,15 +104,32 @@ void LegBirthDeath::finish(MoveContext& ctx, bool accepted)
 
 double LegBirthDeath::logBirthDensity(const MoveContext& ctx, size_t s, const Leg& leg)
 {
+	int drawn = 0;
+	return logBirthDensity(ctx, s, leg, drawn);
+}
+
+double LegBirthDeath::logBirthMass(const MoveContext& ctx, size_t s, const Leg& leg)
+{
+	int drawn = 0;
+	const double density = logBirthDensity(ctx, s, leg, drawn);
+	return density + drawn * core::cachedLog(2 * ctx.mp.delta);  // eq. 19's cell, per drawn coordinate
+}
+
+double LegBirthDeath::logBirthDensity(const MoveContext& ctx, size_t s, const Leg& leg, int& drawn)
+{
 	const obs::Shapelet& sh = ctx.bb.shapelets()[s];
 	const double w = ctx.mp.leg_width, nx = std::cos(sh.normal), ny = std::sin(sh.normal);
 	if (ctx.broad())  // centre uniform on the disc of radius w about s, yaw uniform (mod 2 pi)
+	{
+		drawn = 3;
 		return std::hypot(leg.x - sh.x, leg.y - sh.y) <= w ? -std::log(M_PI * w * w) - std::log(2 * M_PI) : NO_REVERSE;
+	}
 	const double sigma = ctx.sp.leg_position_noise, dx = leg.x - sh.x, dy = leg.y - sh.y;
 	const double normal = dx * nx + dy * ny + w / 2, along = -dx * ny + dy * nx;
 	double fixed = 0;
-	const double alongTerm = ctx.adjacentFaceOffset(s, fixed) ? logGaussian(along - fixed, sigma)
-															   : logUniformPlusGaussian(along, w, sigma);
+	const bool adjacent = ctx.adjacentFaceOffset(s, fixed);
+	const double alongTerm = adjacent ? logGaussian(along - fixed, sigma) : logUniformPlusGaussian(along, w, sigma);
+	drawn = (ctx.sp.leg_angle_noise > 0) + (sigma > 0) + (!adjacent || sigma > 0);
 	return logGaussian(core::angleDiff(leg.theta, sh.normal, 2 * M_PI), ctx.sp.leg_angle_noise) +
 		   logGaussian(normal, sigma) + alongTerm;
 }

@@ -29,7 +29,7 @@ Proposal SplitMerge::split(MoveContext& ctx, size_t s)
 	m_other = bb.addLeg(ctx.newLegFor(s));
 	bb.setShapeletParent(s, m_other);
 	p.logTarget += model::logOddsLeg(bb, m_other);
-	p.logForward += LegBirthDeath::logBirthDensity(ctx, s, bb.leg(m_other));
+	p.logForward += LegBirthDeath::logBirthMass(ctx, s, bb.leg(m_other));
 	if (!stochastic)
 		p.logReverse = atFit ? 0 : NO_REVERSE;
 	else if (!drew)
@@ -62,7 +62,7 @@ std::optional<Proposal> SplitMerge::merge(MoveContext& ctx, Id l, Id other)
 	const bool splittable = m_moved.size() == 1 && m_otherEvidence.empty() && m_oldOther.parent == model::NONE &&
 							m_oldOther.texture == bb.shapelets()[lone].texture && m_oldOther.wx == ctx.mp.leg_width &&
 							m_oldOther.wy == m_oldOther.wx;
-	if (splittable && (stochastic || ctx.atFit(l))) p.logReverse = LegBirthDeath::logBirthDensity(ctx, lone, m_oldOther);
+	if (splittable && (stochastic || ctx.atFit(l))) p.logReverse = LegBirthDeath::logBirthMass(ctx, lone, m_oldOther);
 	double gain = -model::logOddsLeg(bb, other);
 	bb.removeLeg(other);
 	for (const Id s : m_moved)

@@ -32,8 +32,17 @@ class LegBirthDeath
 	 *  zero noise makes that coordinate deterministic: its factor is left out. Broad
 	 *  proposals: uniform on the disc of radius leg_width about s and on the yaw. */
 	static double logBirthDensity(const MoveContext& ctx, size_t s, const model::Leg& leg);
+	/** log of the probability that birthFor(s) proposes `leg`'s cell: logBirthDensity plus
+	 *  log(2 delta) for each coordinate it draws at random (eq. 19's cell, as logJoint counts a
+	 *  hypothesis). The moves' logForward and logReverse for a leg's birth or death: a
+	 *  reversible-jump acceptance compares it with a change of logJoint, itself a cell's mass
+	 *  (doc/sampler.md, "Cells, not densities"). */
+	static double logBirthMass(const MoveContext& ctx, size_t s, const model::Leg& leg);
 
    private:
+	/** logBirthDensity, with the number of coordinates drawn at random. */
+	static double logBirthDensity(const MoveContext& ctx, size_t s, const model::Leg& leg, int& drawn);
+
 	model::Id m_leg = model::NONE;
 	bool m_birth = false;
 };
