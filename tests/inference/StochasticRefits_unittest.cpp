@@ -8,6 +8,7 @@
 #include <whiskermap/inference/moves/LegRefit.h>
 #include <whiskermap/inference/moves/ShapeletLink.h>
 #include <whiskermap/inference/moves/SplitMerge.h>
+#include <whiskermap/inference/moves/TableBirthDeath.h>
 #include <whiskermap/inference/moves/TableRefit.h>
 
 #include "MoveBoards.h"
@@ -32,6 +33,7 @@ using Pose = std::array<double, 3>;  // x, y, yaw
 struct Moments
 {
 	Pose mean{}, var{};
+	double logIntegral = 0;  ///< log of the integral of exp(logp) over the pose (quadrature only)
 };
 
 /** Posterior mean and variance of a pose with log density `logp` (up to a constant) by
@@ -86,6 +88,8 @@ Moments quadrature(const std::function<double(const Pose&)>& logp, const Pose& m
 			}
 	Moments out;
 	for (size_t a = 0; a < 3; a++) out.mean[a] = m1[a] / w, out.var[a] = m2[a] / w - out.mean[a] * out.mean[a];
+	const double dz = 14.0 / (n - 1);  // the grid's volume element: dz^3 / det L
+	out.logIntegral = top + std::log(w) + 3 * std::log(dz) - std::log(L[0][0] * L[1][1] * L[2][2]);
 	return out;
 }
 
@@ -426,5 +430,92 @@ TEST(ReversibleJumpCells, LegBirthAndDeathSampleTheLegsExistence)
 			EXPECT_LT(chain, 0.01);
 		else
 			EXPECT_NEAR(chain, exact, 0.02);
+	}
+}
+
+namespace
+{
+/** Three legs of a table, each refitted to two contacts on its outer faces, free; the table's
+ *  birth from its canonical leg adopts all three. */
+struct ThreeLegs : test::ContextOnBoard
+{
+	explicit ThreeLegs(const model::ModelParams& params) : test::ContextOnBoard(params)
+	{
+		bb.reset(test::touchTable(
+			TRUTH, P, {{0, 0, 0.01}, {0, 1, -0.005}, {1, 1, 0.0}, {1, 2, 0.01}, {3, 0, -0.01}, {3, 3, 0.005}}));
+		const int corners[3] = {0, 1, 3};
+		for (int i = 0; i < 3; i++)
+		{
+			model::Leg leg;
+			model::tableCorner(TRUTH, corners[i], P, leg.x, leg.y);
+			leg.theta = TRUTH.theta, leg.wx = leg.wy = P.leg_width, leg.texture = P.texture;
+			legs[i] = bb.addLeg(leg);
+			bb.setShapeletParent(static_cast<size_t>(2 * i), legs[i]);
+			bb.setShapeletParent(static_cast<size_t>(2 * i + 1), legs[i]);
+			double ignored = 0;
+			ctx.refitInPlace(legs[i], ignored);
+		}
+	}
+	static constexpr model::Table TRUTH{0.2, 0.1, 0.3, 0.05, 0.7};
+	Id legs[3] = {NONE, NONE, NONE};
+};
+
+/** log of the model's odds of a table over the three legs against none: the integral of
+ *  exp(logJoint with the table at pose x, the legs its children) over x, per eq. 19 cell
+ *  (the table and its pose's posterior moments in `moments`). */
+double logTableOdds(const model::ModelParams& P, Moments& moments)
+{
+	ThreeLegs b(P);
+	const double without = model::logJoint(b.bb);
+	const Id t = b.bb.addTable(ThreeLegs::TRUTH);
+	for (const Id l : b.legs) b.bb.setLegParent(l, t);
+	const auto logp = [&](const Pose& p) {
+		return logJointAt(b.bb, b.bb.table(t), p, [&](const model::Table& to) { b.bb.setTable(t, to); }) - without;
+	};
+	moments = quadrature(logp, poseOf(ThreeLegs::TRUTH));
+	return moments.logIntegral - 3 * std::log(2 * P.delta);
+}
+}  // namespace
+
+// Births and deaths of a table over three fixed legs: the chain alternates the table's
+// stochastic birth from its canonical leg and its death, judged by the reversible-jump rule
+// at beta = 1, and its time with a table must match the model's posterior probability of the
+// table (quadrature of its pose, per cell; c_T set so that it is near 1/2). Before this test
+// the death declared no reverse: a born table never died (checked too).
+TEST(ReversibleJumpCells, TableBirthAndDeathSampleTheTablesExistence)
+{
+	model::ModelParams P;
+	Moments m;
+	P.c_T *= std::exp(-logTableOdds(P, m));  // odds 1 at this c_T (logJoint holds log c_T once per table)
+	const double exact = 1 / (1 + std::exp(-logTableOdds(P, m)));
+	ASSERT_NEAR(exact, 0.5, 0.05);
+	inference::SamplerParams rj;
+	rj.acceptance = inference::AcceptanceRule::ReversibleJump;
+	rj.leg_position_noise = std::sqrt(std::max(m.var[0], m.var[1]));  // the pose posterior's own scale
+	rj.leg_angle_noise = std::sqrt(m.var[2]);
+	const inference::Acceptance acceptance(rj.acceptance);
+	for (const bool noReverse : {false, true})  // noReverse: the death as it was
+	{
+		ThreeLegs run(P);
+		MoveContext ctx(run.bb, run.P, rj, run.rng, acceptance);
+		ctx.result = &run.result;
+		inference::moves::TableBirthDeath move(run.P);
+		constexpr int N = 40000;
+		int withTable = 0;
+		for (int i = 0; i < N; i++)
+		{
+			const Id parent = run.bb.leg(run.legs[0]).parent;
+			Proposal p = parent == NONE ? move.birth(ctx, run.legs[0]) : move.death(ctx, parent);
+			if (noReverse && parent != NONE) p.logReverse = -std::numeric_limits<double>::infinity();
+			ctx.judge(move, p);
+			withTable += run.bb.leg(run.legs[0]).parent != NONE;
+		}
+		const double chain = static_cast<double>(withTable) / N;
+		std::printf("table over three legs%s: P(table) chain %.4f, exact %.4f\n", noReverse ? ", death without reverse" : "",
+					chain, exact);
+		if (noReverse)
+			EXPECT_GT(chain, 0.99);
+		else
+			EXPECT_NEAR(chain, exact, 0.03);
 	}
 }

@@ -172,6 +172,36 @@ double MoveContext::logDrawnAbout(const Leg& leg, const Leg& fit) const
 		   logNoise(core::angleDiff(leg.theta, fit.theta, 2 * M_PI), sp.leg_angle_noise);
 }
 
+model::Table MoveContext::drawnTable(const model::Table& fit, bool size)
+{
+	model::Table d = fit;
+	const double sigma = sp.leg_position_noise;
+	d.x += sigma * rng.gaussian();
+	d.y += sigma * rng.gaussian();
+	d.theta += tableAngleNoise(fit) * rng.gaussian();
+	if (size) d.d_length += sigma * rng.gaussian(), d.d_width += sigma * rng.gaussian();
+	return d;
+}
+
+double MoveContext::logTableDrawnAbout(const model::Table& table, const model::Table& fit, bool size) const
+{
+	constexpr double NO = -std::numeric_limits<double>::infinity();
+	if (table.cls != fit.cls || table.leg_width != fit.leg_width || table.texture != fit.texture) return NO;
+	const double sigma = sp.leg_position_noise;
+	double sum = 0;
+	if (size)
+		sum = logNoise(table.d_length - fit.d_length, sigma) + logNoise(table.d_width - fit.d_width, sigma);
+	else if (table.d_length != fit.d_length || table.d_width != fit.d_width)
+		return NO;
+	return sum + logNoise(table.x - fit.x, sigma) + logNoise(table.y - fit.y, sigma) +
+		   logNoise(core::angleDiff(table.theta, fit.theta, 2 * M_PI), tableAngleNoise(fit));
+}
+
+double MoveContext::tableAngleNoise(const model::Table& t) const
+{
+	return sp.leg_position_noise / (0.5 * std::hypot(mp.lengthOf(t), mp.widthOf(t)));
+}
+
 double MoveContext::logNoise(double d, double sigma)
 {
 	if (!(sigma > 0)) return d == 0 ? 0.0 : -std::numeric_limits<double>::infinity();

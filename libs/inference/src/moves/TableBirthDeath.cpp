@@ -15,14 +15,42 @@ using model::Table;
 
 // Death of a table takes the legs it invented (they explain nothing; the prune would remove
 // them), so the move is judged on the whole change. Undone exactly on rejection.
+// Under stochastic refits its reverse is the stochastic birth from the table's canonical leg
+// (its leg of least id): the probability of that birth proposing the table's cell with exactly
+// its legs, on the board after the death.
 Proposal TableBirthDeath::death(MoveContext& ctx, Id t)
 {
 	m_backup = ctx.bb;
 	m_restore = true;
 	m_table = NONE;
+	const Table old = ctx.bb.table(t);
+	m_legs.assign(ctx.bb.legsOf(t).begin(), ctx.bb.legsOf(t).end());
 	Proposal p{Move::Death, removeTableAndOrphans(ctx.bb, t, m_orphans)};
 	p.logReverse = -std::numeric_limits<double>::infinity();
+	if (!ctx.stochasticRefits() || !m_orphans.empty() || m_legs.empty() || ctx.mp.cornersTighterThanReadings() ||
+		old.d_length != 0 || old.d_width != 0 || old.leg_width != ctx.mp.legWidthOf(old.cls) ||
+		old.texture != ctx.mp.textureOf(old.cls))
+		return p;  // the birth makes no invented leg, resizes none and proposes class-size tables
+	for (const Id l : m_legs)
+		if (ctx.bb.leg(l).wx != old.leg_width || ctx.bb.leg(l).wy != old.leg_width) return p;
+	std::sort(m_legs.begin(), m_legs.end());
+	weighCandidates(ctx, m_legs.front());
+	p.logReverse = logDrawnBirth(ctx, m_legs.front(), old, m_legs);
 	return p;
+}
+
+double TableBirthDeath::logDrawnBirth(const MoveContext& ctx, Id l, const Table& table, const std::vector<Id>& legs)
+{
+	double total = 0, sum = -std::numeric_limits<double>::infinity();
+	for (const double w : m_weights) total += w;
+	for (size_t i = 0; i < m_tables.size(); i++)
+	{
+		const Table fitted = outcome(ctx, l, m_tables[i], m_adopted);
+		std::sort(m_adopted.begin(), m_adopted.end());
+		if (m_adopted == legs && m_weights[i] > 0)
+			sum = model::logSumExp(sum, std::log(m_weights[i] / total) + ctx.logTableDrawnAbout(table, fitted, false));
+	}
+	return sum + 3 * std::log(2 * ctx.mp.delta);  // per eq. 19 cell (doc/sampler.md, "Cells, not densities")
 }
 
 // Candidate i is drawn with weight ADOPT_WEIGHT^n_i phi_f,i, n_i the other legs it would adopt
@@ -32,6 +60,16 @@ Proposal TableBirthDeath::death(MoveContext& ctx, Id t)
 // pi/2), for each class of the catalogue, and the pair tables (each class whose corner
 // distances fit the pair). Broad proposals: the 8 tables per class only, drawn uniformly.
 Table TableBirthDeath::drawCandidate(MoveContext& ctx, Id l, double& logProbability)
+{
+	const double total = weighCandidates(ctx, l);
+	size_t choice = 0;
+	for (double u = ctx.rng.uniform() * total; choice + 1 < m_tables.size() && u >= m_weights[choice]; choice++)
+		u -= m_weights[choice];
+	logProbability = std::log(m_weights[choice] / total);
+	return m_tables[choice];
+}
+
+double TableBirthDeath::weighCandidates(const MoveContext& ctx, Id l)
 {
 	constexpr double ADOPT_WEIGHT = 4;
 	m_tables.clear();
@@ -46,42 +84,63 @@ Table TableBirthDeath::drawCandidate(MoveContext& ctx, Id l, double& logProbabil
 			ctx.broad() ? 1.0
 						: std::pow(ADOPT_WEIGHT, static_cast<double>(adoptable(ctx.bb, t, l, m_candidates))) *
 							  std::exp(ctx.bb.swept().logEmptyCorners(t, {0, 0, 0, 0}, ctx.mp)));
-	size_t choice = 0;
-	for (double u = ctx.rng.uniform() * total; choice + 1 < m_tables.size() && u >= m_weights[choice]; choice++)
-		u -= m_weights[choice];
-	logProbability = std::log(m_weights[choice] / total);
-	return m_tables[choice];
+	return total;
 }
 
 // The new table adopts the legs in the same move, so the move is judged on all the evidence
 // it explains.
+// Under stochastic refits the fitted table is drawn about its fit (MoveContext::drawnTable),
+// with the legs the fit adopts: logForward sums over the candidates with that outcome, per
+// cell; the reverse (the death) exists only for the birth from the table's canonical leg.
 Proposal TableBirthDeath::birth(MoveContext& ctx, Id l)
 {
 	double logForward = 0;
 	const Table chosen = drawCandidate(ctx, l, logForward);
-	Proposal p = birthOf(ctx, l, chosen);
+	if (!ctx.stochasticRefits())
+	{
+		Proposal p = birthOf(ctx, l, chosen);
+		p.logForward = logForward;
+		return p;
+	}
+	const Table drawn = ctx.drawnTable(outcome(ctx, l, chosen, m_candidates), false);
+	m_legs = m_candidates;
+	std::sort(m_legs.begin(), m_legs.end());
+	logForward = logDrawnBirth(ctx, l, drawn, m_legs);
+	Proposal p = place(ctx, drawn);
 	p.logForward = logForward;
+	if (m_legs.front() != l) p.logReverse = -std::numeric_limits<double>::infinity();
 	return p;
 }
 
-Proposal TableBirthDeath::birthOf(MoveContext& ctx, Id l, Table chosen)
+Table TableBirthDeath::outcome(const MoveContext& ctx, Id l, Table chosen, std::vector<Id>& adopted)
 {
-	model::Blackboard& bb = ctx.bb;
-	Proposal p{Move::Parent};
+	const model::Blackboard& bb = ctx.bb;
 	// The chosen table, fitted to all the legs it adopts (PoseFit.h; not with broad
 	// proposals), then adopting anew.
-	adoptable(bb, chosen, l, m_candidates);  // fills m_candidates with the adopted legs
-	m_candidates.push_back(l);
+	adoptable(bb, chosen, l, adopted);
+	adopted.push_back(l);
 	m_fitLegs.clear();
 	m_fitCorners.clear();
-	for (const Id a : m_candidates)
+	for (const Id a : adopted)
 	{
 		m_fitLegs.push_back(&bb.leg(a));
 		m_fitCorners.push_back(model::logLegGivenTable(bb.leg(a), chosen, ctx.mp).corner);
 	}
-	if (m_candidates.size() > 1 && !ctx.broad()) chosen = fitTable(ctx.mp, chosen, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
-	adoptable(bb, chosen, l, m_candidates);
-	m_candidates.push_back(l);
+	if (adopted.size() > 1 && !ctx.broad()) chosen = fitTable(ctx.mp, chosen, m_fitLegs.data(), m_fitCorners.data(), m_fitLegs.size());
+	adoptable(bb, chosen, l, adopted);
+	adopted.push_back(l);
+	return chosen;
+}
+
+Proposal TableBirthDeath::birthOf(MoveContext& ctx, Id l, Table chosen)
+{
+	return place(ctx, outcome(ctx, l, chosen, m_candidates));
+}
+
+Proposal TableBirthDeath::place(MoveContext& ctx, const Table& chosen)
+{
+	model::Blackboard& bb = ctx.bb;
+	Proposal p{Move::Parent};
 
 	// Tables the adopted legs leave without any leg that explains a shapelet are pruned at
 	// the end of the sweep anyway: the move removes them itself, so it is judged on that.

@@ -1,4 +1,3 @@
-#include <whiskermap/core/Angles.h>
 #include <whiskermap/inference/PoseFit.h>
 #include <whiskermap/inference/moves/LegRefit.h>
 #include <whiskermap/inference/moves/TableRefit.h>
@@ -91,14 +90,9 @@ std::optional<Proposal> TableRefit::drawn(MoveContext& ctx, Id t, double before)
 	model::Blackboard& bb = ctx.bb;
 	model::Table fit, back;
 	if (!fitToLegs(ctx, m_old, fit)) return std::nullopt;
-	model::Table d = fit;
-	const double sp = ctx.sp.leg_position_noise;
-	d.x += sp * ctx.rng.gaussian();
-	d.y += sp * ctx.rng.gaussian();
-	d.theta += ctx.sp.leg_angle_noise * ctx.rng.gaussian();
-	if (m_resize) d.d_length += sp * ctx.rng.gaussian(), d.d_width += sp * ctx.rng.gaussian();
+	const model::Table d = ctx.drawnTable(fit, m_resize);
 	Proposal p{Move::Refit};
-	p.logForward = logDrawnAbout(ctx, d, fit);
+	p.logForward = ctx.logTableDrawnAbout(d, fit, m_resize);
 	bb.setTable(t, d);
 	for (const auto& [l, saved] : m_savedLegs)
 	{
@@ -112,22 +106,9 @@ std::optional<Proposal> TableRefit::drawn(MoveContext& ctx, Id t, double before)
 		bb.setLeg(l, moved);
 	}
 	fitToLegs(ctx, d, back);  // the same legs: a fit exists
-	p.logReverse += logDrawnAbout(ctx, m_old, back);
+	p.logReverse += ctx.logTableDrawnAbout(m_old, back, m_resize);
 	p.logTarget = model::logJointAround(bb, t) - before;
 	return p;
-}
-
-double TableRefit::logDrawnAbout(const MoveContext& ctx, const model::Table& table, const model::Table& fit) const
-{
-	if (table.cls != fit.cls) return -std::numeric_limits<double>::infinity();
-	const double sp = ctx.sp.leg_position_noise;
-	double size = 0;
-	if (m_resize)
-		size = MoveContext::logNoise(table.d_length - fit.d_length, sp) + MoveContext::logNoise(table.d_width - fit.d_width, sp);
-	else if (table.d_length != fit.d_length || table.d_width != fit.d_width)
-		return -std::numeric_limits<double>::infinity();
-	return size + MoveContext::logNoise(table.x - fit.x, sp) + MoveContext::logNoise(table.y - fit.y, sp) +
-		   MoveContext::logNoise(core::angleDiff(table.theta, fit.theta, 2 * M_PI), ctx.sp.leg_angle_noise);
 }
 
 void TableRefit::finish(MoveContext& ctx, bool accepted)

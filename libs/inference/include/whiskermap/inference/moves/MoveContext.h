@@ -101,6 +101,17 @@ class MoveContext
 	/** log density of `leg` drawn about `fit` by a stochastic refit (texture and size: the
 	 *  fit's, else -inf); a zero noise makes its coordinate a point mass (0 at the fit). */
 	double logDrawnAbout(const model::Leg& leg, const model::Leg& fit) const;
+	/** A stochastic refit's draw of a table about `fit`: x, y + N(0, leg_position_noise^2),
+	 *  yaw + N(0, tableAngleNoise^2), and with `size` its length and width offsets +
+	 *  N(0, leg_position_noise^2) each (else the fit's). */
+	model::Table drawnTable(const model::Table& fit, bool size);
+	/** The yaw noise of a table's draw: leg_position_noise over its half-diagonal, so that its
+	 *  corners move about as far as its centre (leg_angle_noise, a leg's, would move a metre
+	 *  table's corners ten times further). */
+	double tableAngleNoise(const model::Table& t) const;
+	/** log density of drawnTable(fit, size) drawing `table`: -inf if its class, leg width or
+	 *  texture (and without `size`, its size) differ from the fit's. */
+	double logTableDrawnAbout(const model::Table& table, const model::Table& fit, bool size) const;
 	/** log N(d; 0, sigma^2) of a stochastic refit's offset d; sigma = 0: a point mass at 0
 	 *  (0 there, -inf elsewhere; never NaN, which an acceptance would take for 1). */
 	static double logNoise(double d, double sigma);

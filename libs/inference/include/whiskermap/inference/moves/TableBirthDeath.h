@@ -17,6 +17,13 @@ namespace whiskermap::inference::moves
  *  - death(t): removes t and its legs that explain nothing (logForward = 0). logReverse =
  *    -inf: the birth proposes fitted poses only, so it proposes a given table with density 0
  *    in general (an approximation: exact unless t's pose is itself such a fit).
+ *  Under stochastic refits (MoveContext::stochasticRefits: reversible_jump at finite beta)
+ *  both are exact: the birth draws the fitted table about its fit (MoveContext::drawnTable)
+ *  and its logForward is the probability of the drawn table's cell with those legs, summed
+ *  over the candidates that adopt the same legs; the death's logReverse is that probability
+ *  for the birth from the table's canonical leg (its leg of least id) on the board after the
+ *  death, and a birth from another leg declares no reverse (doc/sampler.md, "Cells, not
+ *  densities").
  *  Broad proposals: the 8 single-leg tables per class only, drawn uniformly, not fitted. */
 class TableBirthDeath
 {
@@ -36,12 +43,24 @@ class TableBirthDeath
 	/** Draws a candidate table for leg l (weights ADOPT_WEIGHT^n); `logProbability` gets
 	 *  the log of its probability. */
 	model::Table drawCandidate(MoveContext& ctx, model::Id l, double& logProbability);
+	/** Fills m_tables and m_weights with leg l's candidates and their weights; returns their sum. */
+	double weighCandidates(const MoveContext& ctx, model::Id l);
+	/** What the birth makes of candidate `chosen` for leg l on the board as it is: the table
+	 *  fitted to the legs it adopts (returned) and the legs it then adopts, l last (`adopted`).
+	 *  Changes nothing on the board. */
+	model::Table outcome(const MoveContext& ctx, model::Id l, model::Table chosen, std::vector<model::Id>& adopted);
+	/** Adds table `chosen` adopting m_candidates, with the exact change of logJoint. */
+	Proposal place(MoveContext& ctx, const model::Table& chosen);
+	/** log of the probability, per eq. 19 cell, that the stochastic birth from leg l (its
+	 *  candidates in m_tables, m_weights) proposes `table` adopting exactly `legs` (sorted). */
+	double logDrawnBirth(const MoveContext& ctx, model::Id l, const model::Table& table, const std::vector<model::Id>& legs);
 
 	model::Blackboard m_backup;  ///< the board before a move that removes tables, to undo it
 	std::vector<model::Id> m_resized;  ///< adopted legs refitted at the table's leg width
 	bool m_restore = false;  ///< a rejected move restores m_backup (else undoes the birth)
 	model::Id m_table = model::NONE;  ///< the table born (NONE after a death)
 	std::vector<model::Id> m_candidates, m_oldParents, m_abandoned, m_orphans;
+	std::vector<model::Id> m_legs, m_adopted;  ///< a table's legs (sorted), a candidate's outcome
 	std::vector<model::Table> m_tables;
 	std::vector<double> m_weights;
 	std::vector<const model::Leg*> m_fitLegs;

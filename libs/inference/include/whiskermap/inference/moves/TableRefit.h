@@ -38,9 +38,6 @@ class TableRefit
 	bool fitToLegs(const MoveContext& ctx, const model::Table& start, model::Table& out);
 	/** The stochastic refit (MoveContext::stochasticRefits). */
 	std::optional<Proposal> drawn(MoveContext& ctx, model::Id t, double before);
-	/** log density of `table` drawn about `fit` (the resize: its size too; else the sizes must
-	 *  be equal). */
-	double logDrawnAbout(const MoveContext& ctx, const model::Table& table, const model::Table& fit) const;
 
 	bool m_resize;
 	model::Id m_table = model::NONE;
