@@ -130,39 +130,44 @@ bool MoveContext::fittedLeg(Id l, const model::Table* t, Leg& out)
 	return !t || std::hypot(out.x - qx, out.y - qy) <= mp.parent_gate;
 }
 
+bool MoveContext::fitUnderParent(Id l, Leg& out)
+{
+	const Id parent = bb.leg(l).parent;
+	return fittedLeg(l, parent == model::NONE ? nullptr : &bb.table(parent), out);
+}
+
+void MoveContext::moveLeg(Id l, const Leg& to, double& gain)
+{
+	gain -= model::logOddsLeg(bb, l);
+	bb.setLeg(l, to);
+	gain += model::logOddsLeg(bb, l);
+}
+
 bool MoveContext::refitInPlace(Id l, double& gain)
 {
 	Leg fit;
-	const Id parent = bb.leg(l).parent;
-	if (!fittedLeg(l, parent == model::NONE ? nullptr : &bb.table(parent), fit)) return false;
-	gain -= model::logOddsLeg(bb, l);
-	bb.setLeg(l, fit);
-	gain += model::logOddsLeg(bb, l);
+	if (!fitUnderParent(l, fit)) return false;
+	moveLeg(l, fit, gain);
 	return true;
 }
+
 bool MoveContext::drawRefit(Id l, double& gain, double& logForward)
 {
-	const Id parent = bb.leg(l).parent;
 	Leg fit;
-	if (!fittedLeg(l, parent == model::NONE ? nullptr : &bb.table(parent), fit)) return false;
+	if (!fitUnderParent(l, fit)) return false;
 	Leg drawn = fit;
 	drawn.x += sp.leg_position_noise * rng.gaussian();
 	drawn.y += sp.leg_position_noise * rng.gaussian();
 	drawn.theta += sp.leg_angle_noise * rng.gaussian();
 	logForward += logDrawnAbout(drawn, fit);
-	gain -= model::logOddsLeg(bb, l);
-	bb.setLeg(l, drawn);
-	gain += model::logOddsLeg(bb, l);
+	moveLeg(l, drawn, gain);
 	return true;
 }
 
 double MoveContext::logRefitTo(Id l, const Leg& pose)
 {
-	const Id parent = bb.leg(l).parent;
 	Leg fit;
-	if (!fittedLeg(l, parent == model::NONE ? nullptr : &bb.table(parent), fit))
-		return -std::numeric_limits<double>::infinity();
-	return logDrawnAbout(pose, fit);
+	return fitUnderParent(l, fit) ? logDrawnAbout(pose, fit) : -std::numeric_limits<double>::infinity();
 }
 
 double MoveContext::logDrawnAbout(const Leg& leg, const Leg& fit) const
@@ -212,8 +217,8 @@ bool MoveContext::atFit(Id l)
 {
 	if (broad()) return false;
 	Leg fit;
+	if (!fitUnderParent(l, fit)) return true;
 	const Leg& leg = bb.leg(l);
-	if (!fittedLeg(l, leg.parent == model::NONE ? nullptr : &bb.table(leg.parent), fit)) return true;
 	constexpr double EPS = 1e-12;
 	return std::abs(fit.x - leg.x) <= EPS && std::abs(fit.y - leg.y) <= EPS && std::abs(fit.theta - leg.theta) <= EPS &&
 		   std::abs(fit.texture - leg.texture) <= EPS;

@@ -125,6 +125,11 @@ class MoveContext
 	void randomWalk(double& x, double& y, double& theta);
 
    private:
+	/** fittedLeg(l) with the table l is a leg of (if any). */
+	bool fitUnderParent(model::Id l, model::Leg& out);
+	/** Moves leg l to `to`, adding the change of its eq. 20 log-odds to `gain`. */
+	void moveLeg(model::Id l, const model::Leg& to, double& gain);
+
 	const Acceptance& m_acceptance;
 	std::vector<const obs::Shapelet*> m_contacts;
 };
