@@ -18,7 +18,7 @@ namespace whiskermap::inference::moves
  *  Stochastic under the reversible-jump acceptance at finite beta (MoveContext::
  *  stochasticRefits), so that it has a reverse: the table's fit to its legs that explain
  *  shapelets plus N(0, leg_position_noise^2) per axis (and per size offset, for the resize)
- *  and N(0, leg_angle_noise^2) in yaw; those legs stay (their own refits move them), its
+ *  and N(0, MoveContext::tableAngleNoise^2) in yaw; those legs stay (their own refits move them), its
  *  invented legs move onto the new corners. logForward: the new table's density about the
  *  fit from the old board; logReverse: the old table's about the fit from the new board (-inf
  *  if an invented leg did not stand at its old corner). */
