@@ -3,12 +3,16 @@
 // the model's posterior probability of the hypothesis with it, against quadrature; judged with
 // a bare density, or with the table's death declaring no reverse, they do not.
 #include <whiskermap/inference/moves/LegBirthDeath.h>
+#include <whiskermap/inference/moves/LibraryScan.h>
 #include <whiskermap/inference/moves/TableBirthDeath.h>
 
 #include "MoveBoards.h"
 #include "PoseQuadrature.h"
+#include "ScanChecks.h"
 
 #include <cstdio>
+#include <initializer_list>
+#include <string>
 #include <limits>
 
 using namespace whiskermap;
@@ -18,6 +22,37 @@ using model::Id;
 using model::NONE;
 using test::Moments;
 using test::Pose;
+
+namespace
+{
+/** The model's probability that shapelet 0 of `shapelets` has a free leg of its own (against
+ *  none), its centre within `radius` of the contact, its yaw any: odds = the integral of
+ *  exp(logOddsLeg) per (2 delta)^3 cell (logJoint counts each hypothesis as a cell's mass,
+ *  eq. 19), by quadrature on a polar grid. */
+double legProbability(const model::ModelParams& P, const std::vector<obs::Shapelet>& shapelets, double radius)
+{
+	test::ContextOnBoard q(P);
+	q.bb.reset(shapelets);
+	const obs::Shapelet& s = shapelets[0];
+	model::Leg leg;
+	leg.wx = leg.wy = P.leg_width, leg.texture = s.texture;
+	const Id l = q.bb.addLeg(leg);
+	q.bb.setShapeletParent(0, l);
+	const int NR = 60, NPHI = 120, NYAW = 180;
+	const double cell = std::pow(2 * P.delta, 3);
+	double odds = 0;
+	for (int i = 0; i < NR; i++)
+		for (int j = 0; j < NPHI; j++)
+			for (int k = 0; k < NYAW; k++)
+			{
+				const double r = radius * (i + 0.5) / NR, phi = 2 * M_PI * (j + 0.5) / NPHI;
+				leg.x = s.x + r * std::cos(phi), leg.y = s.y + r * std::sin(phi), leg.theta = 2 * M_PI * (k + 0.5) / NYAW;
+				q.bb.setLeg(l, leg);
+				odds += std::exp(model::logOddsLeg(q.bb, l)) * r * (radius / NR) * (2 * M_PI / NPHI) * (2 * M_PI / NYAW) / cell;
+			}
+	return odds / (1 + odds);
+}
+}  // namespace
 
 // Births and deaths on continuous poses: does one contact have a leg? The chain alternates a
 // leg's birth for the contact (the broad proposal: centre uniform on the disc of radius w about
@@ -38,27 +73,7 @@ TEST(ReversibleJumpCells, LegBirthAndDeathSampleTheLegsExistence)
 	broad.proposals = inference::Proposals::Broad;
 	const inference::Acceptance acceptance(broad.acceptance);
 
-	// Exact: odds = sum over the grid of exp(logOddsLeg) * (area, yaw) element / (2 delta)^3.
-	test::ContextOnBoard q(P);
-	q.bb.reset(shapelets);
-	const obs::Shapelet& s = shapelets[0];
-	model::Leg leg;
-	leg.wx = leg.wy = P.leg_width, leg.texture = s.texture;
-	const Id l = q.bb.addLeg(leg);
-	q.bb.setShapeletParent(0, l);
-	const int NR = 60, NPHI = 120, NYAW = 180;
-	const double w = P.leg_width, cell = std::pow(2 * P.delta, 3);
-	double odds = 0;
-	for (int i = 0; i < NR; i++)
-		for (int j = 0; j < NPHI; j++)
-			for (int k = 0; k < NYAW; k++)
-			{
-				const double r = w * (i + 0.5) / NR, phi = 2 * M_PI * (j + 0.5) / NPHI;
-				leg.x = s.x + r * std::cos(phi), leg.y = s.y + r * std::sin(phi), leg.theta = 2 * M_PI * (k + 0.5) / NYAW;
-				q.bb.setLeg(l, leg);
-				odds += std::exp(model::logOddsLeg(q.bb, l)) * r * (w / NR) * (2 * M_PI / NPHI) * (2 * M_PI / NYAW) / cell;
-			}
-	const double exact = odds / (1 + odds);
+	const double exact = legProbability(P, shapelets, P.leg_width);
 	ASSERT_GT(exact, 0.2);
 	ASSERT_LT(exact, 0.8);
 
@@ -174,5 +189,144 @@ TEST(ReversibleJumpCells, TableBirthAndDeathSampleTheTablesExistence)
 			EXPECT_GT(chain, 0.99);
 		else
 			EXPECT_NEAR(chain, exact, 0.03);
+	}
+}
+
+// The random scan of the library's moves (moves::libraryScan; doc/sampler.md, "Random scan of
+// the library's moves"): each move draws its target and adds that draw's probability both ways.
+
+namespace
+{
+/** The library scan with every move but `keep` given weight 0 (never drawn). */
+inference::RandomScan scanOf(const model::ModelParams& P, std::initializer_list<const char*> keep)
+{
+	inference::RandomScan scan = inference::moves::libraryScan(P);
+	for (inference::ScanMove& m : scan.moves())
+	{
+		bool kept = false;
+		for (const char* k : keep) kept = kept || m.name == k;
+		if (!kept) m.weight = 0;
+	}
+	test::checkTargets(scan);
+	return scan;
+}
+}  // namespace
+
+// A leg's existence under the scan's leg birth, death and refit (broad proposals: births on the
+// disc of radius w about the contact, refits a random walk that can leave it). The refit lets
+// the leg stand anywhere, so the chain must spend the leg's probability over every pose (the
+// integral over a disc of radius 3 w, beyond which exp(logOddsLeg) is negligible), not the
+// births' disc's.
+TEST(ReversibleJumpCells, LibraryScanSamplesALegsExistence)
+{
+	model::ModelParams P;
+	P.alpha_S = 300;
+	const model::Table t{0.3, -0.2, 0.4, P.leg_width, P.texture};
+	const auto shapelets = test::touchTable(t, P, {{0, 0, 0.004}});
+	inference::SamplerParams broad;
+	broad.acceptance = inference::AcceptanceRule::ReversibleJump;
+	broad.proposals = inference::Proposals::Broad;
+	const inference::Acceptance acceptance(broad.acceptance);
+	const double exact = legProbability(P, shapelets, 3 * P.leg_width), onDisc = legProbability(P, shapelets, P.leg_width);
+
+	test::ContextOnBoard run(P);
+	run.bb.reset(shapelets);
+	MoveContext ctx(run.bb, run.P, broad, run.rng, acceptance);
+	ctx.result = &run.result;
+	inference::RandomScan scan = scanOf(P, {"leg birth", "leg death", "leg refit"});
+	constexpr int N = 1000000;
+	int withLeg = 0;
+	for (int i = 0; i < N; i++)
+	{
+		scan.step(ctx);
+		withLeg += run.bb.shapeletParent(0) != NONE;
+	}
+	const double chain = static_cast<double>(withLeg) / N;
+	std::printf("leg of one contact, library scan: P(leg) chain %.4f, exact %.4f (births' disc only: %.4f)\n", chain,
+				exact, onDisc);
+	for (size_t m = 0; m < scan.moves().size(); m++)
+		if (scan.moves()[m].weight > 0)
+			std::printf("  %s: %ld proposed, %ld accepted\n", scan.moves()[m].name.c_str(), scan.proposed()[m], scan.accepted()[m]);
+	EXPECT_NEAR(chain, exact, 0.02);
+}
+
+// A table's existence over three fixed legs under the scan's table birth, death and refit
+// (data-driven, stochastic refits). The scan draws the birth's leg among all three, and only
+// the birth from the canonical leg has a reverse, so the choice probability (1/3) must be in
+// the birth's density; left out, the chain keeps the table too rarely. (c_T is set so that the
+// table's probability is 0.2: births are then accepted with probability about 3/4, so the
+// missing 1/3 shows; at 1/2 they are accepted either way and the chain would not tell.)
+TEST(ReversibleJumpCells, LibraryScanSamplesATablesExistence)
+{
+	model::ModelParams P;
+	Moments m;
+	P.c_T *= 0.25 * std::exp(-logTableOdds(P, m));  // odds 1/4
+	const double exact = 1 / (1 + std::exp(-logTableOdds(P, m)));
+	ASSERT_NEAR(exact, 0.2, 0.02);
+	inference::SamplerParams rj;
+	rj.acceptance = inference::AcceptanceRule::ReversibleJump;
+	rj.leg_position_noise = std::sqrt(std::max(m.var[0], m.var[1]));
+	rj.leg_angle_noise = std::sqrt(m.var[2]);
+	const inference::Acceptance acceptance(rj.acceptance);
+	for (const bool withoutChoice : {false, true})  // withoutChoice: the birth's 1/3 left out of its density
+	{
+		ThreeLegs run(P);
+		MoveContext ctx(run.bb, run.P, rj, run.rng, acceptance);
+		ctx.result = &run.result;
+		inference::RandomScan scan = scanOf(run.P, {"table birth", "table death", "table refit"});
+		if (withoutChoice)
+			for (inference::ScanMove& move : scan.moves())
+				if (move.name == "table birth")
+					move.propose = [inner = move.propose](MoveContext& c) {
+						auto p = inner(c);
+						if (p) p->logForward += std::log(3.0);
+						return p;
+					};
+		constexpr int N = 150000;
+		int withTable = 0;
+		for (int i = 0; i < N; i++)
+		{
+			scan.step(ctx);
+			withTable += run.bb.leg(run.legs[0]).parent != NONE;
+		}
+		const double chain = static_cast<double>(withTable) / N;
+		std::printf("table over three legs, library scan%s: P(table) chain %.4f, exact %.4f\n",
+					withoutChoice ? ", the leg's choice left out" : "", chain, exact);
+		if (withoutChoice)
+			EXPECT_LT(chain, exact - 0.07);
+		else
+			EXPECT_NEAR(chain, exact, 0.03);
+	}
+}
+
+// Every move of the scan on the random boards of the move tests: each accepted move changes
+// logJoint by its logTarget, each rejected one leaves the board's logJoint as it was, and every
+// move is accepted somewhere (the chain moves: births, deaths, links, splits and merges of
+// legs and tables at beta = 1). The model is flattened as in GridProblem.h, so that the
+// posterior spreads over many structures (at the defaults a split or a table's death is all
+// but never accepted).
+TEST(ReversibleJumpCells, LibraryScanMovesAreExactChangesOfTheJoint)
+{
+	model::ModelParams P;
+	P.delta = 0.5, P.epsilon = 0.5, P.c_T = 1, P.c_S = 1e6, P.c_L = 1, P.alpha_L = 10;
+	inference::SamplerParams rj;
+	rj.acceptance = inference::AcceptanceRule::ReversibleJump;
+	const inference::Acceptance acceptance(rj.acceptance);
+	inference::RandomScan total = inference::moves::libraryScan(P);
+	std::vector<long> proposed(total.moves().size(), 0), accepted(total.moves().size(), 0);
+	for (uint64_t seed = 1; seed <= 16; seed++)
+	{
+		test::MoveBoard board(seed, seed % 2 == 0, P);
+		MoveContext ctx(board.bb, board.P, rj, board.rng, acceptance);
+		ctx.result = &board.result;
+		inference::RandomScan scan = inference::moves::libraryScan(P);
+		test::checkTargets(scan);
+		for (int i = 0; i < 3000; i++) scan.step(ctx);
+		for (size_t m = 0; m < proposed.size(); m++) proposed[m] += scan.proposed()[m], accepted[m] += scan.accepted()[m];
+	}
+	for (size_t m = 0; m < proposed.size(); m++)
+	{
+		std::printf("  %s: %ld proposed, %ld accepted\n", total.moves()[m].name.c_str(), proposed[m], accepted[m]);
+		EXPECT_GT(accepted[m], 0) << total.moves()[m].name;
 	}
 }

@@ -11,6 +11,7 @@
 #include <whiskermap/model/Posterior.h>
 
 #include "GridProblem.h"
+#include "ScanChecks.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -42,29 +43,6 @@ std::map<std::string, double> exactPosterior(const Problem& pr)
 	std::map<std::string, double> p;
 	for (const auto& kv : logs) p[kv.first] = std::exp(kv.second - top) / z;
 	return p;
-}
-
-/** Wraps every move of `scan` so that each accepted proposal's logTarget is checked against
- *  the change of logJoint itself (1e-7). */
-void checkTargets(inference::RandomScan& scan)
-{
-	for (inference::ScanMove& m : scan.moves())
-	{
-		const auto before = std::make_shared<double>(0), target = std::make_shared<double>(0);
-		m.propose = [=, inner = m.propose](MoveContext& c) {
-			*before = model::logJoint(c.bb);
-			auto p = inner(c);
-			if (p) *target = p->logTarget;
-			return p;
-		};
-		m.finish = [=, inner = m.finish, name = m.name](MoveContext& c, bool yes) {
-			inner(c, yes);
-			if (yes)
-			{
-				EXPECT_NEAR(model::logJoint(c.bb) - *before, *target, 1e-7) << name;
-			}
-		};
-	}
 }
 
 struct ChiSquared
@@ -152,7 +130,7 @@ TEST(StationaryDistribution, ReversibleJumpChainMatchesTheExactPosterior)
 	const long n = steps();
 
 	inference::RandomScan checked = inference::moves::gridScan(pr.grid);
-	checkTargets(checked);
+	test::checkTargets(checked);
 	runChain(pr, checked, exact, 20000, 2);  // its chi-squared is not tested: only the targets
 
 	inference::RandomScan scan = inference::moves::gridScan(pr.grid);
