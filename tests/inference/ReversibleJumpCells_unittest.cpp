@@ -2,6 +2,7 @@
 // "Cells, not densities"): chains of a leg's and of a table's birth and death at beta = 1 spend
 // the model's posterior probability of the hypothesis with it, against quadrature; judged with
 // a bare density, or with the table's death declaring no reverse, they do not.
+#include <whiskermap/inference/PosteriorChain.h>
 #include <whiskermap/inference/moves/LegBirthDeath.h>
 #include <whiskermap/inference/moves/LibraryScan.h>
 #include <whiskermap/inference/moves/TableBirthDeath.h>
@@ -329,4 +330,34 @@ TEST(ReversibleJumpCells, LibraryScanMovesAreExactChangesOfTheJoint)
 		std::printf("  %s: %ld proposed, %ld accepted\n", total.moves()[m].name.c_str(), proposed[m], accepted[m]);
 		EXPECT_GT(accepted[m], 0) << total.moves()[m].name;
 	}
+}
+
+// The posterior chain (inference::PosteriorChain) from the MAP board with the table over the
+// three legs: the fraction of samples holding the table is its probability (0.2 by
+// quadrature), and its pose spread over them is the quadrature's posterior standard deviation.
+// Only the table's moves run (the quadrature holds the legs fixed).
+TEST(ReversibleJumpCells, PosteriorChainGivesATablesExistenceAndSpread)
+{
+	model::ModelParams P;
+	Moments m;
+	P.c_T *= 0.25 * std::exp(-logTableOdds(P, m));
+	const double exact = 1 / (1 + std::exp(-logTableOdds(P, m)));
+	inference::SamplerParams params;
+	params.leg_position_noise = std::sqrt(std::max(m.var[0], m.var[1]));
+	params.leg_angle_noise = std::sqrt(m.var[2]);
+	ThreeLegs map(P);
+	const Id t = map.bb.addTable(ThreeLegs::TRUTH);
+	for (const Id l : map.legs) map.bb.setLegParent(l, t);
+	inference::PosteriorChain chain(map.P, params);
+	for (inference::ScanMove& move : chain.scan().moves())
+		if (move.name != "table birth" && move.name != "table death" && move.name != "table refit") move.weight = 0;
+	const auto summary = chain.run(map.bb, 7, 1000, 30000, 10);
+	ASSERT_EQ(summary.size(), static_cast<size_t>(t) + 1);
+	const inference::PosteriorChain::Summary& s = summary[static_cast<size_t>(t)];
+	std::printf("posterior chain: existence %.4f (exact %.4f); sd x %.5f (%.5f), y %.5f (%.5f), yaw %.5f (%.5f)\n",
+				s.existence, exact, s.sd_x, std::sqrt(m.var[0]), s.sd_y, std::sqrt(m.var[1]), s.sd_yaw, std::sqrt(m.var[2]));
+	EXPECT_NEAR(s.existence, exact, 0.03);
+	EXPECT_NEAR(s.sd_x / std::sqrt(m.var[0]), 1, 0.1);
+	EXPECT_NEAR(s.sd_y / std::sqrt(m.var[1]), 1, 0.1);
+	EXPECT_NEAR(s.sd_yaw / std::sqrt(m.var[2]), 1, 0.1);
 }
