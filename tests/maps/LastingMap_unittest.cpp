@@ -14,6 +14,7 @@
 #include <whiskermap/world/WhiskerSimulator.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <memory>
@@ -187,6 +188,34 @@ TEST(LastingMap, MirrorTableIsCorrectedWhenAThirdLegIsTouched)
 		EXPECT_EQ(first[0][i].normal, first[1][i].normal);
 	}
 	EXPECT_EQ(mirrorsFirst, 1);
+}
+
+// The same two legs with the posterior chain (sampler key posterior_steps, doc/sampler.md "A
+// posterior from a chain"): the table's existence is the fraction of the chain's samples
+// holding it. With its mirror image as likely, that is about one half; once the third leg is
+// touched the table is certain.
+TEST(LastingMap, PosteriorChainGivesAMirrorPairHalfItsExistence)
+{
+	const world::World w = oneTable(0, 0), mirror = oneTable(0, 0.6);
+	const auto legA = posesTouchingOnly({w, mirror}, {0.5, 0.3}, 2), legB = posesTouchingOnly({w, mirror}, {-0.5, 0.3}, 2);
+	ASSERT_EQ(legA.size(), 2u);
+	ASSERT_EQ(legB.size(), 2u);
+	Map m(TMode::Lasting);
+	m.map->samplerParams.posterior_steps = 20000;
+	world::WhiskerSimulator sim(w, scratchbot(), world::NoisePreset::load(SRC + "/config/noise/default.ini"), 7);
+	for (size_t i = 0; i < 2; i++) m.insert(sim, legA[i]), m.insert(sim, legB[i]);
+	std::vector<maps::TMappedObject> all = m.map->mapObjects(), candidates = m.map->candidateObjects();
+	all.insert(all.end(), candidates.begin(), candidates.end());
+	ASSERT_EQ(all.size(), 1u);
+	std::printf("two legs: existence %.3f\n", all[0].existence);
+	EXPECT_GT(all[0].existence, 0.35);
+	EXPECT_LT(all[0].existence, 0.65);
+	for (const auto& pose : posesTouchingOnly({w}, {0.5, -0.3}, 2)) m.insert(sim, pose);
+	const auto objects = m.map->mapObjects();
+	ASSERT_EQ(objects.size(), 1u);
+	std::printf("three legs: existence %.3f\n", objects[0].existence);
+	EXPECT_TRUE(near(objects[0].table, w.tables[0], 0.004, 1));
+	EXPECT_GT(objects[0].existence, 0.95);
 }
 
 // A shipped sparse evaluation path (doc/eval-worlds.md): no 7 consecutive contacts hold two

@@ -2,9 +2,13 @@
 #include <whiskermap/inference/PosteriorChain.h>
 #include <whiskermap/inference/moves/LibraryScan.h>
 #include <whiskermap/inference/moves/MoveContext.h>
+#include <whiskermap/model/Densities.h>
 
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <whiskermap/model/Posterior.h>
 
 namespace whiskermap::inference
 {
@@ -26,7 +30,24 @@ PosteriorChain::PosteriorChain(const model::ModelParams& model, SamplerParams pa
 std::vector<PosteriorChain::Summary> PosteriorChain::run(
 	const model::Blackboard& start, uint64_t seed, long burnIn, long samples, long thin)
 {
+	// The start: every hypothesis awake (a lasting map's region marks its context dormant;
+	// the chain moves it too), and each leg that explains nothing exactly at its table's
+	// corner, as a corner birth puts it (a table refit since may have left it a few um off:
+	// without this, no move could undo it, since each reverse needs it exactly there).
 	m_bb = start;
+	for (model::Id t = 0; t < m_bb.tableIdBound(); t++)
+		if (m_bb.hasTable(t)) m_bb.setTableDormant(t, false);
+	for (model::Id l = 0; l < m_bb.legIdBound(); l++)
+	{
+		if (!m_bb.hasLeg(l)) continue;
+		m_bb.setLegDormant(l, false);
+		model::Leg leg = m_bb.leg(l);
+		if (leg.parent == model::NONE || m_bb.explains(l)) continue;
+		const model::Table& t = m_bb.table(leg.parent);
+		model::tableCorner(t, leg.corner, m_model, leg.x, leg.y);
+		leg.theta = t.theta, leg.wx = leg.wy = t.leg_width, leg.texture = t.texture;
+		m_bb.setLeg(l, leg);
+	}
 	m_rng.seed(seed);
 	StepResult counts;
 	moves::MoveContext ctx(m_bb, m_model, m_params, m_rng, m_acceptance);
@@ -38,6 +59,7 @@ std::vector<PosteriorChain::Summary> PosteriorChain::run(
 	for (long k = 0; k < samples; k++)
 	{
 		for (long j = 0; j < thin; j++) m_scan.step(ctx);
+		if (std::getenv("PCDBG") && k % 200 == 0) { std::fprintf(stderr, "sample %ld: %zu tables:", k, m_bb.tableCount()); for (model::Id u = 0; u < m_bb.tableIdBound(); u++) if (m_bb.hasTable(u)) std::fprintf(stderr, " (%.3f,%.3f,%.1f)", m_bb.table(u).x, m_bb.table(u).y, m_bb.table(u).theta*57.3); std::fprintf(stderr, " legs %zu logJ %.2f\n", m_bb.legCount(), model::logJoint(m_bb)); }
 		for (model::Id t = 0; t < start.tableIdBound(); t++)
 		{
 			if (!start.hasTable(t)) continue;
@@ -57,6 +79,7 @@ std::vector<PosteriorChain::Summary> PosteriorChain::run(
 			for (int a = 0; a < 3; a++) s[1 + a] += d[a], s[4 + a] += d[a] * d[a];
 		}
 	}
+	if (std::getenv("PCDBG")) for (size_t m = 0; m < m_scan.moves().size(); m++) std::fprintf(stderr, "  %s %ld/%ld\n", m_scan.moves()[m].name.c_str(), m_scan.accepted()[m], m_scan.proposed()[m]);
 	for (size_t t = 0; t < out.size(); t++)
 	{
 		const std::array<double, 7>& s = sums[t];

@@ -31,6 +31,7 @@ SamplerParams SamplerParams::fromIni(core::IniSection& sec)
 		p.proposals = Proposals::Broad;
 	else if (proposals != "data_driven")
 		sec.fail("proposals", "must be data_driven or broad, not '" + proposals + "'");
+	p.posterior_steps = sec.integer("posterior_steps", 0, 0, 100000000);
 	sec.finish();
 	return p;
 }

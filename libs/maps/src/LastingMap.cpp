@@ -42,8 +42,16 @@ inference::SamplerParams localSampler(inference::SamplerParams p, const LastingM
 }  // namespace
 
 std::vector<double> LastingMap::existence(
-	const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model)
+	const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model,
+	const inference::SamplerParams& sampler, uint64_t seed)
 {
+	std::vector<inference::PosteriorChain::Summary> chain;  // issue 10's posterior, when asked for
+	if (sampler.posterior_steps > 0)
+	{
+		if (!m_posterior) m_posterior = std::make_unique<inference::PosteriorChain>(model, sampler);
+		const long burnIn = sampler.posterior_steps / 5;
+		chain = m_posterior->run(solved, seed ^ 0x5851F42D4C957F2DULL, burnIn, (sampler.posterior_steps - burnIn) / 5, 5);
+	}
 	// Where legs changed (came, went, moved, relinked, gained contacts): a table's existence
 	// depends on its own legs and on the legs that could pair with them (TableExistence), so
 	// only tables within a pair's reach of a change are scored again; the rest keep theirs.
@@ -67,7 +75,9 @@ std::vector<double> LastingMap::existence(
 		for (const model::Id l : solved.legsOf(t))
 			for (const auto& [x, y] : changed)
 				same = same && std::hypot(x - solved.leg(l).x, y - solved.leg(l).y) > reach;
-		out[static_cast<size_t>(t)] = same ? m_state.existence(m_region->tables[static_cast<size_t>(t)]) : m_existence.of(solved, t);
+		out[static_cast<size_t>(t)] = same          ? m_state.existence(m_region->tables[static_cast<size_t>(t)])
+									  : chain.empty() ? m_existence.of(solved, t)
+													  : chain[static_cast<size_t>(t)].existence;
 	}
 	return out;
 }
@@ -137,7 +147,7 @@ LastingMap::TStats LastingMap::annealPending(
 	m_pendingSweeps = 0;
 	if (!(m_samplerModel == model) || !(m_samplerSchedule == m_options.schedule))
 	{
-		m_sampler.reset(), m_reviser.reset();
+		m_sampler.reset(), m_reviser.reset(), m_posterior.reset();
 		m_samplerModel = model;
 		m_samplerSchedule = m_options.schedule;
 	}
@@ -215,7 +225,7 @@ LastingMap::TStats LastingMap::solve(
 			if (sameFitData(board, solved, b))
 				m_carry.emplace_back(b, m_state.reported(m_region->tables[static_cast<size_t>(b)]));
 	}
-	m_state.replace(*m_region, solved, existence(board, solved, model), m_newTables, m_newLegs, wallExistence(solved), model);
+	m_state.replace(*m_region, solved, existence(board, solved, model, sampler, seed), m_newTables, m_newLegs, wallExistence(solved), model);
 	// No two legs in one place: the search may pass through overlaps (eq. 16 is soft), the
 	// stored map may not (doc/map-plugin.md). The merged legs' tables are refitted.
 	m_merged.clear();

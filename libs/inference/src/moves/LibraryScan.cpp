@@ -47,6 +47,12 @@ std::function<std::optional<Proposal>(MoveContext&)> onUniform(Pick pick, Propos
 		return withDraws(propose(c, id), -logCount(n), -logCount(n));
 	};
 }
+/** True if leg l explains something besides one of its shapelets. */
+bool keepsSomething(const model::Blackboard& bb, Id l) { return bb.shapeletsOf(l).size() + !bb.evidence(l).empty() >= 2; }
+/** A self-reverse move of a leg drawn uniformly, proposing nothing on a leg that explains
+ *  nothing (the scan keeps those exactly at their corners, where the corner births put them). */
+template <class Propose>
+std::function<std::optional<Proposal>(MoveContext&)> onExplainingLeg(Propose propose);
 std::pair<size_t, Id> anyLeg(MoveContext& c)
 {
 	const size_t n = c.bb.legCount();
@@ -56,6 +62,14 @@ std::pair<size_t, Id> anyTable(MoveContext& c)
 {
 	const size_t n = c.bb.tableCount();
 	return {n, n ? nthTable(c.bb, c.rng.pick(n)) : NONE};
+}
+template <class Propose>
+std::function<std::optional<Proposal>(MoveContext&)> onExplainingLeg(Propose propose)
+{
+	return onUniform(anyLeg, [=](MoveContext& c, Id l) -> std::optional<Proposal> {
+		if (!c.bb.explains(l)) return std::nullopt;
+		return propose(c, l);
+	});
 }
 }  // namespace
 
@@ -102,22 +116,27 @@ RandomScan libraryScan(const model::ModelParams& params)
 				  return withDraws(legs->death(c, l), -logCount(n), reverse);
 			  },
 			  finisher(legs)});
-	scan.add({"table birth", 1, 3,
-			  [=](MoveContext& c) -> std::optional<Proposal> {
-				  const auto [n, l] = anyLeg(c);
-				  if (n == 0) return std::nullopt;
-				  Proposal p = tables->birth(c, l);
-				  return withDraws(p, -logCount(n), -logCount(c.bb.tableCount()));
-			  },
-			  finisher(tables)});
-	scan.add({"table death", 1, 2,
-			  [=](MoveContext& c) -> std::optional<Proposal> {
-				  const auto [n, t] = anyTable(c);
-				  if (n == 0) return std::nullopt;
-				  Proposal p = tables->death(c, t);
-				  return withDraws(p, -logCount(n), -logCount(c.bb.legCount()));  // its canonical leg among those left
-			  },
-			  finisher(tables)});
+	// Table birth and death (reverse indices: the pair's other), plain and completed.
+	const auto tablePair = [&](const std::shared_ptr<TableBirthDeath>& move, const char* birth, const char* death) {
+		const size_t at = scan.moves().size();
+		scan.add({birth, 1, at + 1,
+				  [=](MoveContext& c) -> std::optional<Proposal> {
+					  const auto [n, l] = anyLeg(c);
+					  if (n == 0) return std::nullopt;
+					  Proposal p = move->birth(c, l);
+					  return withDraws(p, -logCount(n), -logCount(c.bb.tableCount()));
+				  },
+				  finisher(move)});
+		scan.add({death, 1, at,
+				  [=](MoveContext& c) -> std::optional<Proposal> {
+					  const auto [n, t] = anyTable(c);
+					  if (n == 0) return std::nullopt;
+					  Proposal p = move->death(c, t);
+					  return withDraws(p, -logCount(n), -logCount(c.bb.legCount()));  // its canonical leg among those left
+				  },
+				  finisher(move)});
+	};
+	tablePair(tables, "table birth", "table death");
 	scan.add({"link", 1, 4,
 			  [=](MoveContext& c) -> std::optional<Proposal> {
 				  const size_t n = c.bb.shapelets().size();
@@ -130,6 +149,8 @@ RandomScan libraryScan(const model::ModelParams& params)
 				  if (near->empty()) return std::nullopt;
 				  const size_t options = near->size();
 				  const Id to = (*near)[c.rng.pick(options)];
+				  if (!c.bb.explains(to) || (c.bb.leg(from).parent != NONE && !keepsSomething(c.bb, from)))
+					  return std::nullopt;  // a leg that explains nothing stays exactly at its corner
 				  Proposal p = link->link(c, s, to, Move::Child);
 				  double reverse = NO_REVERSE;  // the link back: s among all, `from` among the legs near s but `to`
 				  if (std::isfinite(p.logReverse))
@@ -173,16 +194,20 @@ RandomScan libraryScan(const model::ModelParams& params)
 								   -logCount(c.bb.shapelets().size()));
 			  },
 			  finisher(splitMerge)});
-	scan.add({"leg refit", 1, 7, onUniform(anyLeg, [=](MoveContext& c, Id l) { return legRefit->propose(c, l); }),
+	scan.add({"leg refit", 1, 7, onExplainingLeg([=](MoveContext& c, Id l) { return legRefit->propose(c, l); }),
 			  finisher(legRefit)});
 	scan.add({"table refit", 1, 8, onUniform(anyTable, [=](MoveContext& c, Id t) { return tableRefit->propose(c, t); }),
 			  finisher(tableRefit)});
-	scan.add({"leg reparent", 1, 9, onUniform(anyLeg, [=](MoveContext& c, Id l) { return reparent->propose(c, l); }),
+	scan.add({"leg reparent", 1, 9, onExplainingLeg([=](MoveContext& c, Id l) { return reparent->propose(c, l); }),
 			  finisher(reparent)});
+	const auto completed = std::make_shared<TableBirthDeath>(params, true);
+	tablePair(completed, "table birth, completed", "table death, with its invented legs");
+	scan.add({"table switch", 1, scan.moves().size(),
+			  onUniform(anyTable, [=](MoveContext& c, Id t) { return completed->rebirth(c, t); }), finisher(completed)});
 	if (params.size_moves)
 	{
 		const auto resize = std::make_shared<TableRefit>(true);
-		scan.add({"table resize", 1, 10, onUniform(anyTable, [=](MoveContext& c, Id t) { return resize->propose(c, t); }),
+		scan.add({"table resize", 1, scan.moves().size(), onUniform(anyTable, [=](MoveContext& c, Id t) { return resize->propose(c, t); }),
 				  finisher(resize)});
 	}
 	return scan;

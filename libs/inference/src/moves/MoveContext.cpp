@@ -198,8 +198,11 @@ double MoveContext::logTableDrawnAbout(const model::Table& table, const model::T
 		sum = logNoise(table.d_length - fit.d_length, sigma) + logNoise(table.d_width - fit.d_width, sigma);
 	else if (table.d_length != fit.d_length || table.d_width != fit.d_width)
 		return NO;
+	// A table turned by pi (a square one by pi/2) is the same table, its corners relabelled:
+	// the yaw is drawn on that circle, so that every representation of a table has its density.
+	const double period = mp.lengthOf(fit) == mp.widthOf(fit) ? M_PI_2 : M_PI;
 	return sum + logNoise(table.x - fit.x, sigma) + logNoise(table.y - fit.y, sigma) +
-		   logNoise(core::angleDiff(table.theta, fit.theta, 2 * M_PI), tableAngleNoise(fit));
+		   logNoise(core::angleDiff(table.theta, fit.theta, period), tableAngleNoise(fit));
 }
 
 double MoveContext::tableAngleNoise(const model::Table& t) const

@@ -23,11 +23,16 @@ Proposal TableBirthDeath::death(MoveContext& ctx, Id t)
 	m_backup = ctx.bb;
 	m_restore = true;
 	m_table = NONE;
+	m_invented.clear();
 	const Table old = ctx.bb.table(t);
-	m_legs.assign(ctx.bb.legsOf(t).begin(), ctx.bb.legsOf(t).end());
+	const bool completed = m_complete && invented(ctx, t);  // the orphans are the completed birth's
+	m_legs.clear();
+	for (const Id l : ctx.bb.legsOf(t))
+		if (ctx.bb.explains(l)) m_legs.push_back(l);
 	Proposal p{Move::Death, removeTableAndOrphans(ctx.bb, t, m_orphans)};
 	p.logReverse = -std::numeric_limits<double>::infinity();
-	if (!ctx.stochasticRefits() || !m_orphans.empty() || m_legs.empty() || ctx.mp.cornersTighterThanReadings() ||
+	if (!ctx.stochasticRefits() || (!m_orphans.empty() && !completed) || m_legs.empty() ||
+		ctx.mp.cornersTighterThanReadings() ||
 		old.d_length != 0 || old.d_width != 0 || old.leg_width != ctx.mp.legWidthOf(old.cls) ||
 		old.texture != ctx.mp.textureOf(old.cls))
 		return p;  // the birth makes no invented leg, resizes none and proposes class-size tables
@@ -36,6 +41,38 @@ Proposal TableBirthDeath::death(MoveContext& ctx, Id t)
 	std::sort(m_legs.begin(), m_legs.end());
 	weighCandidates(ctx, m_legs.front());
 	p.logReverse = logDrawnBirth(ctx, m_legs.front(), old, m_legs);
+	return p;
+}
+
+std::optional<Proposal> TableBirthDeath::rebirth(MoveContext& ctx, Id t)
+{
+	const bool complete = m_complete;
+	m_complete = true;
+	Proposal p = death(ctx, t);  // completed; the board is now without t and its invented legs
+	m_complete = complete;
+	if (!std::isfinite(p.logReverse))
+	{
+		finish(ctx, false);
+		return std::nullopt;
+	}
+	const std::vector<Id> legs = m_legs;  // sorted: legs.front() is the canonical leg
+	double logForward = 0;
+	const Table chosen = drawCandidate(ctx, legs.front(), logForward);
+	const Table drawn = ctx.drawnTable(outcome(ctx, legs.front(), chosen, m_candidates), false);
+	std::sort(m_candidates.begin(), m_candidates.end());
+	bool sameWidth = true;  // else place() would refit the legs (and its own backup would replace the death's)
+	for (const Id l : legs) sameWidth = sameWidth && ctx.bb.leg(l).wx == drawn.leg_width && ctx.bb.leg(l).wy == drawn.leg_width;
+	if (m_candidates != legs || !sameWidth)
+	{
+		finish(ctx, false);
+		return std::nullopt;
+	}
+	p.logForward = logDrawnBirth(ctx, legs.front(), drawn, legs);
+	const Proposal born = place(ctx, drawn);  // adopts free legs at the table's width: nothing to restore
+	p.logTarget += born.logTarget;
+	invent(ctx, p.logTarget);
+	m_restore = true;  // a rejection restores the board before the death
+	p.kind = Move::Parent;
 	return p;
 }
 
@@ -109,7 +146,47 @@ Proposal TableBirthDeath::birth(MoveContext& ctx, Id l)
 	Proposal p = place(ctx, drawn);
 	p.logForward = logForward;
 	if (m_legs.front() != l) p.logReverse = -std::numeric_limits<double>::infinity();
+	if (m_complete) invent(ctx, p.logTarget);
 	return p;
+}
+
+bool TableBirthDeath::invented(const MoveContext& ctx, Id t) const
+{
+	const model::Blackboard& bb = ctx.bb;
+	const Table& table = bb.table(t);
+	const model::CornerCounts counts = bb.cornerCounts(t);
+	for (const int c : counts)
+		if (c == 0) return false;
+	for (const Id l : bb.legsOf(t))
+	{
+		if (bb.explains(l)) continue;
+		const model::Leg& leg = bb.leg(l);
+		double x = 0, y = 0;
+		model::tableCorner(table, leg.corner, ctx.mp, x, y);
+		if (counts[static_cast<size_t>(leg.corner)] != 1 || leg.x != x || leg.y != y || leg.theta != table.theta ||
+			leg.wx != table.leg_width || leg.wy != table.leg_width || leg.texture != table.texture)
+			return false;
+	}
+	return true;
+}
+
+void TableBirthDeath::invent(MoveContext& ctx, double& logTarget)
+{
+	model::Blackboard& bb = ctx.bb;
+	const Table& table = bb.table(m_table);
+	const model::CornerCounts counts = bb.cornerCounts(m_table);
+	for (int c = 0; c < 4; c++)
+	{
+		if (counts[static_cast<size_t>(c)] != 0) continue;
+		model::Leg leg;
+		model::tableCorner(table, c, ctx.mp, leg.x, leg.y);
+		leg.theta = table.theta;
+		leg.wx = leg.wy = table.leg_width;
+		leg.texture = table.texture;
+		leg.parent = m_table;
+		m_invented.push_back(bb.addLeg(leg));
+		logTarget += model::logOddsLeg(bb, m_invented.back());  // eq. 20, as birthAtCorner
+	}
 }
 
 Table TableBirthDeath::outcome(const MoveContext& ctx, Id l, Table chosen, std::vector<Id>& adopted)
@@ -141,6 +218,7 @@ Proposal TableBirthDeath::place(MoveContext& ctx, const Table& chosen)
 {
 	model::Blackboard& bb = ctx.bb;
 	Proposal p{Move::Parent};
+	m_invented.clear();
 
 	// Tables the adopted legs leave without any leg that explains a shapelet are pruned at
 	// the end of the sweep anyway: the move removes them itself, so it is judged on that.
@@ -200,6 +278,7 @@ void TableBirthDeath::finish(MoveContext& ctx, bool accepted)
 		ctx.bb = m_backup;
 		return;
 	}
+	for (const Id l : m_invented) ctx.bb.removeLeg(l);
 	ctx.bb.removeTable(m_table);
 	for (size_t i = 0; i < m_candidates.size(); i++) ctx.bb.setLegParent(m_candidates[i], m_oldParents[i]);
 }

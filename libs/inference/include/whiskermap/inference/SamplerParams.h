@@ -46,8 +46,13 @@ struct SamplerParams
 	AcceptanceRule acceptance = AcceptanceRule::Gibbs;
 	/** Key `proposals` (optional): `data_driven` (default) or `broad` (issue 10's baseline). */
 	Proposals proposals = Proposals::DataDriven;
+	/** Key `posterior_steps` (optional, default 0): steps of the posterior chain
+	 *  (PosteriorChain, doc/sampler.md "A posterior from a chain") after each lasting-map
+	 *  insertion: the first fifth burn-in, then every 5th state a sample; the tables' existence
+	 *  is then the chain's. 0: existence from TableExistence. */
+	long posterior_steps = 0;
 
-	/** Reads every key of `sec` (all required but `acceptance` and `proposals`; the schedule as beta_start,
+	/** Reads every key of `sec` (all required but `acceptance`, `proposals` and `posterior_steps`; the schedule as beta_start,
 	 *  beta_end, temperatures) and calls sec.finish(); throws core::Error. */
 	static SamplerParams fromIni(core::IniSection& sec);
 };

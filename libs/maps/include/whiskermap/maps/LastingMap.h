@@ -1,5 +1,6 @@
 #pragma once
 #include <whiskermap/inference/BlackboardSampler.h>
+#include <whiskermap/inference/PosteriorChain.h>
 #include <whiskermap/inference/RigidPoseSpread.h>
 #include <whiskermap/inference/TableExistence.h>
 #include <whiskermap/model/LastingState.h>
@@ -146,9 +147,12 @@ class LastingMap
 	/** The model the reported poses are fitted (and their spreads scored) with: `model` with
 	 *  shaft noise on. */
 	static model::ModelParams reportModel(const model::ModelParams& model);
-	/** Existence of each table of `solved` (grown from `start`, the region's board). */
+	/** Existence of each table of `solved` (grown from `start`, the region's board): the
+	 *  tables near a change scored again, by TableExistence or, with the sampler's
+	 *  posterior_steps, by the posterior chain from `solved` (seeded from `seed`). */
 	std::vector<double> existence(
-		const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model);
+		const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model,
+		const inference::SamplerParams& sampler, uint64_t seed);
 	/** Existence of each wall of `solved`: the logistic of its log-odds (model::logOddsWall). */
 	static std::vector<double> wallExistence(const model::Blackboard& solved);
 	/** Refits the reported pose of every table whose legs the last replace() may have changed:
@@ -164,6 +168,7 @@ class LastingMap
 	// Reused across insertions (not copied: a copy rebuilds them): the local schedule's
 	// sampler and the revisions' (the sampler's full schedule), each for m_samplerModel.
 	std::unique_ptr<inference::BlackboardSampler> m_sampler, m_reviser;
+	std::unique_ptr<inference::PosteriorChain> m_posterior;  ///< with posterior_steps
 	model::ModelParams m_samplerModel;
 	TOptions::TSchedule m_samplerSchedule;
 	std::unique_ptr<model::LastingState::Region> m_region;

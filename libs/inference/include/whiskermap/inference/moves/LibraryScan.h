@@ -13,6 +13,9 @@ namespace whiskermap::inference::moves
  *  - leg birth: half the time birthFor(s), s uniform among the shapelets and unexplained,
  *    else birthAtCorner(t), t uniform among the tables / leg death: l uniform among the legs;
  *  - table birth: from l uniform among the legs / table death: t uniform among the tables;
+ *    and the same pair completed (TableBirthDeath's `complete`: the birth invents the legs
+ *    of its empty corners, the death takes them);
+ *  - table switch: t uniform among the tables, TableBirthDeath::rebirth (its own reverse);
  *  - link: s uniform among the shapelets on a leg, to a leg uniform among the others within
  *    the parent gate of s (its own reverse);
  *  - split: s uniform among the shapelets on a leg / merge: l uniform among the legs, then

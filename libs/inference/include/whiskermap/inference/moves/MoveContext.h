@@ -110,7 +110,8 @@ class MoveContext
 	 *  table's corners ten times further). */
 	double tableAngleNoise(const model::Table& t) const;
 	/** log density of drawnTable(fit, size) drawing `table`: -inf if its class, leg width or
-	 *  texture (and without `size`, its size) differ from the fit's. */
+	 *  texture (and without `size`, its size) differ from the fit's. Yaws are compared modulo
+	 *  pi (pi/2 for a square table): turned by that, a table is the same table. */
 	double logTableDrawnAbout(const model::Table& table, const model::Table& fit, bool size) const;
 	/** log N(d; 0, sigma^2) of a stochastic refit's offset d; sigma = 0: a point mass at 0
 	 *  (0 there, -inf elsewhere; never NaN, which an acceptance would take for 1). */

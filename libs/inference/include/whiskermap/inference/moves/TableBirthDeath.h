@@ -24,17 +24,31 @@ namespace whiskermap::inference::moves
  *  for the birth from the table's canonical leg (its leg of least id) on the board after the
  *  death, and a birth from another leg declares no reverse (doc/sampler.md, "Cells, not
  *  densities").
- *  Broad proposals: the 8 single-leg tables per class only, drawn uniformly, not fitted. */
+ *  Broad proposals: the 8 single-leg tables per class only, drawn uniformly, not fitted.
+ *  Completed (`complete`, the random scan's second pair, doc/sampler.md "Random scan of the
+ *  library's moves"): the birth also invents a leg exactly at each corner its adopted legs
+ *  leave empty (as birthAtCorner would), and the death takes those invented legs with the
+ *  table; its reverse exists when every corner holds a leg and each leg that explains nothing
+ *  stands exactly at a corner no other leg holds. A table and its mirror image, each with its
+ *  invented legs, are then two moves apart instead of five. */
 class TableBirthDeath
 {
    public:
-	explicit TableBirthDeath(const model::ModelParams& p) : m_backup(p) {}
+	explicit TableBirthDeath(const model::ModelParams& p, bool complete = false) : m_backup(p), m_complete(complete) {}
 
 	Proposal birth(MoveContext& ctx, model::Id l);
 	/** The birth of table `chosen` for leg l as birth() makes it once drawn (fitted to the
 	 *  legs it adopts, adopting anew), with logForward = 0: SlidingTableBirth's first step. */
 	Proposal birthOf(MoveContext& ctx, model::Id l, model::Table chosen);
 	Proposal death(MoveContext& ctx, model::Id t);
+	/** The completed death of t and a completed birth from its canonical leg in one move (the
+	 *  random scan's table switch: a table to its mirror image, or to another corner
+	 *  assignment, without passing through "no table", which the posterior all but rules
+	 *  out). Proposed (else nullopt, board unchanged) under stochastic refits when the death's
+	 *  reverse exists and the birth adopts exactly t's legs that explain data; logForward and
+	 *  logReverse: the birth's probability of the new and of the old table's cell, on the
+	 *  board without either. Its own reverse. */
+	std::optional<Proposal> rebirth(MoveContext& ctx, model::Id t);
 	void finish(MoveContext& ctx, bool accepted);
 
    private:
@@ -55,7 +69,16 @@ class TableBirthDeath
 	 *  candidates in m_tables, m_weights) proposes `table` adopting exactly `legs` (sorted). */
 	double logDrawnBirth(const MoveContext& ctx, model::Id l, const model::Table& table, const std::vector<model::Id>& legs);
 
+	/** True if every corner of table t holds a leg and each of its legs that explains
+	 *  nothing stands exactly where a completed birth invents it, alone at its corner. */
+	bool invented(const MoveContext& ctx, model::Id t) const;
+	/** The completed birth's legs at the empty corners of m_table; adds their eq. 20 log-odds
+	 *  to `logTarget`. */
+	void invent(MoveContext& ctx, double& logTarget);
+
 	model::Blackboard m_backup;  ///< the board before a move that removes tables, to undo it
+	bool m_complete = false;
+	std::vector<model::Id> m_invented;  ///< legs the completed birth invented
 	std::vector<model::Id> m_resized;  ///< adopted legs refitted at the table's leg width
 	bool m_restore = false;  ///< a rejected move restores m_backup (else undoes the birth)
 	model::Id m_table = model::NONE;  ///< the table born (NONE after a death)
