@@ -45,13 +45,6 @@ std::vector<double> LastingMap::existence(
 	const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model,
 	const inference::SamplerParams& sampler, uint64_t seed)
 {
-	std::vector<inference::PosteriorChain::Summary> chain;  // issue 10's posterior, when asked for
-	if (sampler.posterior_steps > 0)
-	{
-		if (!m_posterior) m_posterior = std::make_unique<inference::PosteriorChain>(model, sampler);
-		const long burnIn = sampler.posterior_steps / 5;
-		chain = m_posterior->run(solved, seed ^ 0x5851F42D4C957F2DULL, burnIn, (sampler.posterior_steps - burnIn) / 5, 5);
-	}
 	// Where legs changed (came, went, moved, relinked, gained contacts): a table's existence
 	// depends on its own legs and on the legs that could pair with them (TableExistence), so
 	// only tables within a pair's reach of a change are scored again; the rest keep theirs.
@@ -66,6 +59,7 @@ std::vector<double> LastingMap::existence(
 	}
 	const double reach = std::hypot(model.table_length, model.table_width) + 3 * model.parent_gate;
 	std::vector<double> out(static_cast<size_t>(solved.tableIdBound()), 0.0);
+	std::vector<model::Id> rescored;
 	for (model::Id t = 0; t < solved.tableIdBound(); t++)
 	{
 		if (!solved.hasTable(t)) continue;
@@ -75,10 +69,21 @@ std::vector<double> LastingMap::existence(
 		for (const model::Id l : solved.legsOf(t))
 			for (const auto& [x, y] : changed)
 				same = same && std::hypot(x - solved.leg(l).x, y - solved.leg(l).y) > reach;
-		out[static_cast<size_t>(t)] = same          ? m_state.existence(m_region->tables[static_cast<size_t>(t)])
-									  : chain.empty() ? m_existence.of(solved, t)
-													  : chain[static_cast<size_t>(t)].existence;
+		if (same)
+			out[static_cast<size_t>(t)] = m_state.existence(m_region->tables[static_cast<size_t>(t)]);
+		else
+			rescored.push_back(t);
 	}
+	if (rescored.empty() || sampler.posterior_steps == 0)
+	{
+		for (const model::Id t : rescored) out[static_cast<size_t>(t)] = m_existence.of(solved, t);
+		return out;
+	}
+	// Issue 10's posterior: the fraction of the chain's samples holding each re-scored table.
+	if (!m_posterior) m_posterior = std::make_unique<inference::PosteriorChain>(model, sampler);
+	const long burnIn = sampler.posterior_steps / 5;
+	const auto chain = m_posterior->run(solved, seed ^ 0x5851F42D4C957F2DULL, burnIn, (sampler.posterior_steps - burnIn) / 5, 5);
+	for (const model::Id t : rescored) out[static_cast<size_t>(t)] = chain[static_cast<size_t>(t)].existence;
 	return out;
 }
 
