@@ -28,6 +28,24 @@ using test::Pose;
 
 namespace
 {
+/** One contact on a leg's face, under a model in which its leg is about as probable as none
+ *  (alpha_S = 300; the defaults give 1 - 1e-4), with broad proposals judged by the
+ *  reversible-jump rule. */
+struct OneContact
+{
+	OneContact()
+	{
+		P.alpha_S = 300;
+		shapelets = test::touchTable({0.3, -0.2, 0.4, P.leg_width, P.texture}, P, {{0, 0, 0.004}});
+		broad.acceptance = inference::AcceptanceRule::ReversibleJump;
+		broad.proposals = inference::Proposals::Broad;
+	}
+	model::ModelParams P;
+	std::vector<obs::Shapelet> shapelets;
+	inference::SamplerParams broad;
+	inference::Acceptance acceptance{inference::AcceptanceRule::ReversibleJump};
+};
+
 /** The model's probability that shapelet 0 of `shapelets` has a free leg of its own (against
  *  none), its centre within `radius` of the contact, its yaw any: odds = the integral of
  *  exp(logOddsLeg) per (2 delta)^3 cell (logJoint counts each hypothesis as a cell's mass,
@@ -67,14 +85,11 @@ double legProbability(const model::ModelParams& P, const std::vector<obs::Shapel
 // charges the leg (2 delta)^3 once more (-11.7 nats at the defaults) and all but never keeps it.
 TEST(ReversibleJumpCells, LegBirthAndDeathSampleTheLegsExistence)
 {
-	model::ModelParams P;
-	P.alpha_S = 300;  // a contact's leg about as probable as none (the defaults give 1 - 1e-4)
-	const model::Table t{0.3, -0.2, 0.4, P.leg_width, P.texture};
-	const auto shapelets = test::touchTable(t, P, {{0, 0, 0.004}});
-	inference::SamplerParams broad;
-	broad.acceptance = inference::AcceptanceRule::ReversibleJump;
-	broad.proposals = inference::Proposals::Broad;
-	const inference::Acceptance acceptance(broad.acceptance);
+	const OneContact one;
+	const model::ModelParams& P = one.P;
+	const auto& shapelets = one.shapelets;
+	const inference::SamplerParams& broad = one.broad;
+	const inference::Acceptance& acceptance = one.acceptance;
 
 	const double exact = legProbability(P, shapelets, P.leg_width);
 	ASSERT_GT(exact, 0.2);
@@ -222,14 +237,11 @@ inference::RandomScan scanOf(const model::ModelParams& P, std::initializer_list<
 // births' disc's.
 TEST(ReversibleJumpCells, LibraryScanSamplesALegsExistence)
 {
-	model::ModelParams P;
-	P.alpha_S = 300;
-	const model::Table t{0.3, -0.2, 0.4, P.leg_width, P.texture};
-	const auto shapelets = test::touchTable(t, P, {{0, 0, 0.004}});
-	inference::SamplerParams broad;
-	broad.acceptance = inference::AcceptanceRule::ReversibleJump;
-	broad.proposals = inference::Proposals::Broad;
-	const inference::Acceptance acceptance(broad.acceptance);
+	const OneContact one;
+	const model::ModelParams& P = one.P;
+	const auto& shapelets = one.shapelets;
+	const inference::SamplerParams& broad = one.broad;
+	const inference::Acceptance& acceptance = one.acceptance;
 	const double exact = legProbability(P, shapelets, 3 * P.leg_width), onDisc = legProbability(P, shapelets, P.leg_width);
 
 	test::ContextOnBoard run(P);
