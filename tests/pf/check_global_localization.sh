@@ -5,8 +5,9 @@
 # (issue 9; doc/slam.md, "Global localisation"), through scripts/global-localization.sh:
 # uniform prior over the whole paper arena, filter seed 1, the first STEPS sweeps of the
 # SLAM lawnmower. Asserted: the estimate converges (every estimate from some step to the
-# last within 0.10 m and 8 degrees of the truth; measured with the .ini of 2026-12-04: by
-# step 12 for seed 1, by step 33 for seeds 1-10). Control: the same run without the swept
+# last within 0.10 m and 8 degrees of the truth; measured with the .ini of 2026-12-04 (the
+# auxiliary particle filter): by step 27 for seed 1; over 200 steps, by steps 20-117 for seeds
+# 1-10). Control: the same run without the swept
 # grid (use_swept_grid off, the leg likelihood alone) must not converge, so the check can fail.
 set -euo pipefail
 src=$1 build=$2 work=$3
