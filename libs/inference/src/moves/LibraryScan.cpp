@@ -49,10 +49,7 @@ std::function<std::optional<Proposal>(MoveContext&)> onUniform(Pick pick, Propos
 }
 /** True if leg l explains something besides one of its shapelets. */
 bool keepsSomething(const model::Blackboard& bb, Id l) { return bb.shapeletsOf(l).size() + !bb.evidence(l).empty() >= 2; }
-/** A self-reverse move of a leg drawn uniformly, proposing nothing on a leg that explains
- *  nothing (the scan keeps those exactly at their corners, where the corner births put them). */
-template <class Propose>
-std::function<std::optional<Proposal>(MoveContext&)> onExplainingLeg(Propose propose);
+/** A leg (table) drawn uniformly among all: their number and its id (NONE if there is none). */
 std::pair<size_t, Id> anyLeg(MoveContext& c)
 {
 	const size_t n = c.bb.legCount();
@@ -63,6 +60,8 @@ std::pair<size_t, Id> anyTable(MoveContext& c)
 	const size_t n = c.bb.tableCount();
 	return {n, n ? nthTable(c.bb, c.rng.pick(n)) : NONE};
 }
+/** A self-reverse move of a leg drawn uniformly, proposing nothing on a leg that explains
+ *  nothing (the scan keeps those exactly at their corners, where the corner births put them). */
 template <class Propose>
 std::function<std::optional<Proposal>(MoveContext&)> onExplainingLeg(Propose propose)
 {
