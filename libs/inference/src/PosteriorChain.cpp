@@ -6,9 +6,6 @@
 
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <whiskermap/model/Posterior.h>
 
 namespace whiskermap::inference
 {
@@ -59,7 +56,6 @@ std::vector<PosteriorChain::Summary> PosteriorChain::run(
 	for (long k = 0; k < samples; k++)
 	{
 		for (long j = 0; j < thin; j++) m_scan.step(ctx);
-		if (std::getenv("PCDBG") && k % 200 == 0) { std::fprintf(stderr, "sample %ld: %zu tables:", k, m_bb.tableCount()); for (model::Id u = 0; u < m_bb.tableIdBound(); u++) if (m_bb.hasTable(u)) std::fprintf(stderr, " (%.3f,%.3f,%.1f)", m_bb.table(u).x, m_bb.table(u).y, m_bb.table(u).theta*57.3); std::fprintf(stderr, " legs %zu logJ %.2f\n", m_bb.legCount(), model::logJoint(m_bb)); }
 		for (model::Id t = 0; t < start.tableIdBound(); t++)
 		{
 			if (!start.hasTable(t)) continue;
@@ -79,7 +75,6 @@ std::vector<PosteriorChain::Summary> PosteriorChain::run(
 			for (int a = 0; a < 3; a++) s[1 + a] += d[a], s[4 + a] += d[a] * d[a];
 		}
 	}
-	if (std::getenv("PCDBG")) for (size_t m = 0; m < m_scan.moves().size(); m++) std::fprintf(stderr, "  %s %ld/%ld\n", m_scan.moves()[m].name.c_str(), m_scan.accepted()[m], m_scan.proposed()[m]);
 	for (size_t t = 0; t < out.size(); t++)
 	{
 		const std::array<double, 7>& s = sums[t];

@@ -38,8 +38,6 @@ class PosteriorChain
 
 	/** The scan (its moves' weights may be changed; its counts accumulate over runs). */
 	RandomScan& scan() { return m_scan; }
-	/** The board where the last run ended. */
-	const model::Blackboard& board() const { return m_bb; }
 
    private:
 	model::ModelParams m_model;
