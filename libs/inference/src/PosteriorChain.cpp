@@ -1,5 +1,6 @@
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/inference/PosteriorChain.h>
+#include <whiskermap/inference/moves/LegBirthDeath.h>
 #include <whiskermap/inference/moves/LibraryScan.h>
 #include <whiskermap/inference/moves/MoveContext.h>
 #include <whiskermap/model/Densities.h>
@@ -38,12 +39,9 @@ std::vector<PosteriorChain::Summary> PosteriorChain::run(
 	{
 		if (!m_bb.hasLeg(l)) continue;
 		m_bb.setLegDormant(l, false);
-		model::Leg leg = m_bb.leg(l);
-		if (leg.parent == model::NONE || m_bb.explains(l)) continue;
-		const model::Table& t = m_bb.table(leg.parent);
-		model::tableCorner(t, leg.corner, m_model, leg.x, leg.y);
-		leg.theta = t.theta, leg.wx = leg.wy = t.leg_width, leg.texture = t.texture;
-		m_bb.setLeg(l, leg);
+		const model::Leg& leg = m_bb.leg(l);
+		if (leg.parent != model::NONE && !m_bb.explains(l))
+			m_bb.setLeg(l, moves::LegBirthDeath::atCorner(m_model, m_bb.table(leg.parent), leg.corner, leg.parent));
 	}
 	m_rng.seed(seed);
 	StepResult counts;

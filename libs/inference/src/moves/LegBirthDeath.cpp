@@ -54,15 +54,8 @@ std::optional<Proposal> LegBirthDeath::birthAtCorner(MoveContext& ctx, Id t)
 	for (int c = 0; c < 4; c++)
 		if (counts[c] == 0) empty[n++] = c;
 	if (n == 0) return std::nullopt;
-	const model::Table& table = ctx.bb.table(t);
-	Leg l;
-	model::tableCorner(table, empty[ctx.rng.pick(static_cast<size_t>(n))], ctx.mp, l.x, l.y);
-	l.theta = table.theta;
-	l.wx = l.wy = table.leg_width;
-	l.texture = table.texture;
-	l.parent = t;
 	m_birth = true;
-	m_leg = ctx.bb.addLeg(l);
+	m_leg = ctx.bb.addLeg(atCorner(ctx.mp, ctx.bb.table(t), empty[ctx.rng.pick(static_cast<size_t>(n))], t));
 	Proposal p{Move::Child, model::logOddsLeg(ctx.bb, m_leg)};
 	p.logForward = -std::log(n);
 	return p;
@@ -85,16 +78,27 @@ std::optional<Proposal> LegBirthDeath::death(MoveContext& ctx, Id l)
 		if (leg.texture == sh.texture && leg.wx == ctx.mp.leg_width && leg.wy == leg.wx)
 			p.logReverse = logBirthMass(ctx, static_cast<size_t>(own[0]), leg);
 	}
-	else if (leg.parent != NONE && own.empty())
-	{
-		const model::Table& t = bb.table(leg.parent);
-		Leg at = leg;
-		model::tableCorner(t, leg.corner, ctx.mp, at.x, at.y);
-		if (at.x == leg.x && at.y == leg.y && leg.theta == t.theta && leg.wx == t.leg_width &&
-			leg.wy == t.leg_width && leg.texture == t.texture)
-			p.logReverse = -std::log(emptyCorners(bb, leg.parent, l));
-	}
+	else if (leg.parent != NONE && own.empty() && standsAtCorner(ctx.mp, leg, bb.table(leg.parent)))
+		p.logReverse = -std::log(emptyCorners(bb, leg.parent, l));
 	return p;
+}
+
+Leg LegBirthDeath::atCorner(const model::ModelParams& p, const model::Table& t, int c, Id parent)
+{
+	Leg l;
+	model::tableCorner(t, c, p, l.x, l.y);
+	l.theta = t.theta;
+	l.wx = l.wy = t.leg_width;
+	l.texture = t.texture;
+	l.parent = parent;
+	return l;
+}
+
+bool LegBirthDeath::standsAtCorner(const model::ModelParams& p, const Leg& leg, const model::Table& t)
+{
+	const Leg at = atCorner(p, t, leg.corner, leg.parent);
+	return at.x == leg.x && at.y == leg.y && leg.theta == at.theta && leg.wx == at.wx && leg.wy == at.wy &&
+		   leg.texture == at.texture;
 }
 
 void LegBirthDeath::finish(MoveContext& ctx, bool accepted)

@@ -1,5 +1,6 @@
 #include <whiskermap/inference/PoseFit.h>
 #include <whiskermap/inference/TableProposals.h>
+#include <whiskermap/inference/moves/LegBirthDeath.h>
 #include <whiskermap/inference/moves/TableBirthDeath.h>
 #include <whiskermap/model/Densities.h>
 #include <whiskermap/model/Posterior.h>
@@ -159,12 +160,9 @@ bool TableBirthDeath::invented(const MoveContext& ctx, Id t) const
 		if (c == 0) return false;
 	for (const Id l : bb.legsOf(t))
 	{
-		if (bb.explains(l)) continue;
 		const model::Leg& leg = bb.leg(l);
-		double x = 0, y = 0;
-		model::tableCorner(table, leg.corner, ctx.mp, x, y);
-		if (counts[static_cast<size_t>(leg.corner)] != 1 || leg.x != x || leg.y != y || leg.theta != table.theta ||
-			leg.wx != table.leg_width || leg.wy != table.leg_width || leg.texture != table.texture)
+		if (!bb.explains(l) &&
+			(counts[static_cast<size_t>(leg.corner)] != 1 || !LegBirthDeath::standsAtCorner(ctx.mp, leg, table)))
 			return false;
 	}
 	return true;
@@ -178,13 +176,7 @@ void TableBirthDeath::invent(MoveContext& ctx, double& logTarget)
 	for (int c = 0; c < 4; c++)
 	{
 		if (counts[static_cast<size_t>(c)] != 0) continue;
-		model::Leg leg;
-		model::tableCorner(table, c, ctx.mp, leg.x, leg.y);
-		leg.theta = table.theta;
-		leg.wx = leg.wy = table.leg_width;
-		leg.texture = table.texture;
-		leg.parent = m_table;
-		m_invented.push_back(bb.addLeg(leg));
+		m_invented.push_back(bb.addLeg(LegBirthDeath::atCorner(ctx.mp, table, c, m_table)));
 		logTarget += model::logOddsLeg(bb, m_invented.back());  // eq. 20, as birthAtCorner
 	}
 }

@@ -38,6 +38,11 @@ class LegBirthDeath
 	 *  reversible-jump acceptance compares it with a change of logJoint, itself a cell's mass
 	 *  (doc/sampler.md, "Cells, not densities"). */
 	static double logBirthMass(const MoveContext& ctx, size_t s, const model::Leg& leg);
+	/** The leg birthAtCorner invents at corner c of table `t` (id `parent`): exactly at the
+	 *  corner, the table's yaw, leg width and texture. */
+	static model::Leg atCorner(const model::ModelParams& p, const model::Table& t, int c, model::Id parent);
+	/** True if `leg` stands exactly as atCorner puts it at its own corner of table `t`. */
+	static bool standsAtCorner(const model::ModelParams& p, const model::Leg& leg, const model::Table& t);
 
    private:
 	/** logBirthDensity, with the number of coordinates drawn at random. */
