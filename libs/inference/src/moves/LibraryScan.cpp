@@ -49,6 +49,21 @@ std::function<std::optional<Proposal>(MoveContext&)> onUniform(Pick pick, Propos
 }
 /** True if leg l explains something besides one of its shapelets. */
 bool keepsSomething(const model::Blackboard& bb, Id l) { return bb.shapeletsOf(l).size() + !bb.evidence(l).empty() >= 2; }
+/** A shapelet drawn uniformly among all N: N, the shapelet and its leg (NONE: it has none). */
+struct ShapeletOnLeg
+{
+	size_t n = 0, s = 0;
+	Id leg = NONE;
+};
+ShapeletOnLeg anyShapelet(MoveContext& c)
+{
+	ShapeletOnLeg out;
+	out.n = c.bb.shapelets().size();
+	if (out.n == 0) return out;
+	out.s = c.rng.pick(out.n);
+	out.leg = c.bb.shapeletParent(out.s);
+	return out;
+}
 /** A leg (table) drawn uniformly among all: their number and its id (NONE if there is none). */
 std::pair<size_t, Id> anyLeg(MoveContext& c)
 {
@@ -138,10 +153,7 @@ RandomScan libraryScan(const model::ModelParams& params)
 	tablePair(tables, "table birth", "table death");
 	scan.add({"link", 1, 4,
 			  [=](MoveContext& c) -> std::optional<Proposal> {
-				  const size_t n = c.bb.shapelets().size();
-				  if (n == 0) return std::nullopt;
-				  const size_t s = c.rng.pick(n);
-				  const Id from = c.bb.shapeletParent(s);
+				  const auto [n, s, from] = anyShapelet(c);
 				  if (from == NONE) return std::nullopt;  // from no leg: no reverse link
 				  c.legsNearShapelet(s, *near);
 				  near->erase(std::remove(near->begin(), near->end(), from), near->end());
@@ -164,10 +176,7 @@ RandomScan libraryScan(const model::ModelParams& params)
 			  finisher(link)});
 	scan.add({"split", 1, 6,
 			  [=](MoveContext& c) -> std::optional<Proposal> {
-				  const size_t n = c.bb.shapelets().size();
-				  if (n == 0) return std::nullopt;
-				  const size_t s = c.rng.pick(n);
-				  const Id from = c.bb.shapeletParent(s);
+				  const auto [n, s, from] = anyShapelet(c);
 				  if (from == NONE) return std::nullopt;
 				  Proposal p = splitMerge->split(c, s);
 				  double reverse = NO_REVERSE;  // the merge: `from` among all legs, then the new leg among its candidates

@@ -47,10 +47,7 @@ Proposal TableBirthDeath::death(MoveContext& ctx, Id t)
 
 std::optional<Proposal> TableBirthDeath::rebirth(MoveContext& ctx, Id t)
 {
-	const bool complete = m_complete;
-	m_complete = true;
-	Proposal p = death(ctx, t);  // completed; the board is now without t and its invented legs
-	m_complete = complete;
+	Proposal p = death(ctx, t);  // the board is now without t (and, completed, its invented legs)
 	if (!std::isfinite(p.logReverse))
 	{
 		finish(ctx, false);

@@ -41,8 +41,8 @@ class TableBirthDeath
 	 *  legs it adopts, adopting anew), with logForward = 0: SlidingTableBirth's first step. */
 	Proposal birthOf(MoveContext& ctx, model::Id l, model::Table chosen);
 	Proposal death(MoveContext& ctx, model::Id t);
-	/** The completed death of t and a completed birth from its canonical leg in one move (the
-	 *  random scan's table switch: a table to its mirror image, or to another corner
+	/** The death of t and a birth from its canonical leg in one move, completed on a completed
+	 *  TableBirthDeath (the random scan's table switch: a table to its mirror image, or to another corner
 	 *  assignment, without passing through "no table", which the posterior all but rules
 	 *  out). Proposed (else nullopt, board unchanged) under stochastic refits when the death's
 	 *  reverse exists and the birth adopts exactly t's legs that explain data; logForward and
