@@ -2,6 +2,7 @@
 #include <whiskermap/core/MathCache.h>
 #include <whiskermap/inference/PoseFit.h>
 #include <whiskermap/inference/TableExistence.h>
+#include <whiskermap/inference/moves/LegBirthDeath.h>
 #include <whiskermap/inference/TableProposals.h>
 #include <whiskermap/model/Densities.h>
 #include <whiskermap/model/Posterior.h>
@@ -115,13 +116,7 @@ double TableExistence::scoreRival(model::Blackboard& bb, Table& t, Id leg)
 	for (int c = 0; c < 4; c++)
 	{
 		if (counts[c] > 0) continue;
-		Leg l;
-		model::tableCorner(t, c, p, l.x, l.y);
-		l.theta = t.theta;
-		l.wx = l.wy = t.leg_width;
-		l.texture = t.texture;
-		l.parent = id;
-		const Id li = bb.addLeg(l);
+		const Id li = bb.addLeg(moves::LegBirthDeath::atCorner(p, t, c, id));
 		const double gain = model::logOddsLeg(bb, li);
 		if (gain > 0)
 			s += gain, m_invented.push_back(li);
