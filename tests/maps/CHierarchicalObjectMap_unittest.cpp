@@ -357,14 +357,14 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheLegSpreads)
 	const auto* begin = static_cast<const uint8_t*>(buf.getRawBufferData());
 	const std::vector<uint8_t> bytes(begin, begin + buf.getTotalBytesCount());
 	const size_t version = 1 + std::string("whiskermap::maps::CHierarchicalObjectMap").size();
-	ASSERT_EQ(bytes[version], 12);
+	ASSERT_EQ(bytes[version], 13);
 	const auto load = [](std::vector<uint8_t> v) {
 		mrpt::io::CMemoryStream in;
 		in.assignMemoryNotOwn(v.data(), v.size());
 		return std::dynamic_pointer_cast<CHierarchicalObjectMap>(mrpt::serialization::archiveFrom(in).ReadObject());
 	};
-	// The tail before version 12's batch (16 bytes) and MRPT's end flag: two doubles per
-	// class, class 2's leg width spread first.
+	// The tail before version 12's batch (16 bytes), version 13's chain spreads (none: no
+	// table) and MRPT's end flag: two doubles per class, class 2's leg width spread first.
 	const long tail = 16 * static_cast<long>(a.modelParams.classes.size()), batch = 16;
 	std::vector<uint8_t> old = bytes;
 	old[version] = 10;
@@ -419,6 +419,61 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheSweepsPending)
 	EXPECT_ANY_THROW(load(corrupt(4, uint32_t{4})));
 	EXPECT_ANY_THROW(load(corrupt(8, uint64_t{1} << 40)));
 	EXPECT_TRUE(load(corrupt(4, uint32_t{3})));
+}
+
+// Version 13 stores each lasting table's pose spread from the posterior chain (sampler key
+// posterior_steps); a version 12 stream (the same bytes without them) loads with none, and a
+// spread neither -1 (none) nor a number in [0, 1000] is refused.
+TEST(CHierarchicalObjectMap, SerializationKeepsTheChainsPoseSpreads)
+{
+	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/paper_arena/default.rawlog");
+	CHierarchicalObjectMap a;
+	a.samplerParams.posterior_steps = 1000;
+	const auto& st = a.lastingMap().state();
+	const auto known = [](const model::LastingState& s) {
+		size_t n = 0;
+		for (model::Id t = 0; t < s.tableIdBound(); t++) n += s.hasTable(t) && s.chainSpread(t).known();
+		return n;
+	};
+	for (size_t i = 0; known(st) < 2; i++)
+		a.insertObservation(*rawlog.sweeps.at(i).obs, mrpt::poses::CPose3D(rawlog.sweeps.at(i).robotPose));
+	const auto b = reloaded(a);
+	ASSERT_TRUE(b);
+	const auto mine = a.mapObjects(true), theirs = b->mapObjects(true);
+	ASSERT_EQ(mine.size(), theirs.size());
+	for (size_t i = 0; i < mine.size(); i++)
+	{
+		EXPECT_EQ(theirs[i].sd_x, mine[i].sd_x);
+		EXPECT_EQ(theirs[i].sd_y, mine[i].sd_y);
+		EXPECT_EQ(theirs[i].sd_yaw, mine[i].sd_yaw);
+	}
+	EXPECT_EQ(known(b->lastingMap().state()), known(st));
+
+	mrpt::io::CMemoryStream buf;
+	mrpt::serialization::archiveFrom(buf) << a;
+	const auto* begin = static_cast<const uint8_t*>(buf.getRawBufferData());
+	const std::vector<uint8_t> bytes(begin, begin + buf.getTotalBytesCount());
+	const size_t version = 1 + std::string("whiskermap::maps::CHierarchicalObjectMap").size();
+	ASSERT_EQ(bytes[version], 13);
+	const auto load = [](std::vector<uint8_t> v) {
+		mrpt::io::CMemoryStream in;
+		in.assignMemoryNotOwn(v.data(), v.size());
+		return std::dynamic_pointer_cast<CHierarchicalObjectMap>(mrpt::serialization::archiveFrom(in).ReadObject());
+	};
+	const long tail = 24 * static_cast<long>(st.tableCount());  // three doubles per table, before the end flag
+	std::vector<uint8_t> old = bytes;
+	old[version] = 12;
+	old.erase(old.end() - 1 - tail, old.end() - 1);
+	const auto c = load(old);
+	ASSERT_TRUE(c);
+	EXPECT_EQ(c->lastingMap().state().tableCount(), st.tableCount());
+	EXPECT_EQ(known(c->lastingMap().state()), 0u);
+	for (const double corrupt : {std::nan(""), -0.5, 2e3})
+	{
+		std::vector<uint8_t> bad = bytes;
+		std::memcpy(bad.data() + bad.size() - 1 - tail, &corrupt, sizeof corrupt);
+		EXPECT_ANY_THROW(load(bad)) << corrupt;
+	}
 }
 
 // The per-pose mode's consolidation survives the round trip too (objects and records).

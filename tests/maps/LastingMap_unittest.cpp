@@ -216,6 +216,29 @@ TEST(LastingMap, PosteriorChainGivesAMirrorPairHalfItsExistence)
 	std::printf("three legs: existence %.3f\n", objects[0].existence);
 	EXPECT_TRUE(near(objects[0].table, w.tables[0], 0.004, 1));
 	EXPECT_GT(objects[0].existence, 0.95);
+
+	// map_tables.csv's spread is the chain's: the spread of the table's pose over its samples,
+	// of the order of sigma_corner / sqrt(contacts), not RigidPoseSpread's (another chain).
+	const auto& st = m.map->lastingMap().state();
+	model::Id t = 0;
+	while (!st.hasTable(t)) t++;
+	const auto chain = st.chainSpread(t);
+	const auto reported = m.map->mapObjects(true);
+	ASSERT_TRUE(chain.known());
+	std::printf("chain spread: %.2f mm, %.2f mm, %.3f deg\n", 1e3 * chain.sd_x, 1e3 * chain.sd_y, core::rad2deg(chain.sd_yaw));
+	EXPECT_EQ(reported[0].sd_x, chain.sd_x);
+	EXPECT_EQ(reported[0].sd_y, chain.sd_y);
+	EXPECT_EQ(reported[0].sd_yaw, chain.sd_yaw);
+	for (const double sd : {chain.sd_x, chain.sd_y}) EXPECT_TRUE(sd > 2e-4 && sd < 0.01) << sd;
+	EXPECT_TRUE(chain.sd_yaw > core::deg2rad(0.02) && chain.sd_yaw < core::deg2rad(2)) << chain.sd_yaw;
+	m.map->samplerParams.posterior_steps = 0;  // a table scored without the chain reports none
+	for (const auto& pose : posesTouchingOnly({w}, {-0.5, -0.3}, 1)) m.insert(sim, pose);
+	const auto plain = m.map->mapObjects(true);
+	ASSERT_EQ(plain.size(), 1u);
+	EXPECT_NE(plain[0].sd_x, chain.sd_x);
+	t = 0;
+	while (!st.hasTable(t)) t++;
+	EXPECT_FALSE(st.chainSpread(t).known());
 }
 
 // A shipped sparse evaluation path (doc/eval-worlds.md): no 7 consecutive contacts hold two

@@ -94,6 +94,11 @@ std::vector<TMappedObject> CHierarchicalObjectMap::lastingObjects(bool inMap, bo
 		if (!s.hasTable(t) || (s.existence(t) >= likelihoodOptions.min_existence) != inMap) continue;
 		out.push_back(mapped(t));
 		if (!spreads) continue;
+		if (const auto& chain = s.chainSpread(t); chain.known())  // the posterior chain's (posterior_steps)
+		{
+			out.back().sd_x = chain.sd_x, out.back().sd_y = chain.sd_y, out.back().sd_yaw = chain.sd_yaw;
+			continue;
+		}
 		const inference::PoseSpread spread = m_lasting.poseSpread(t, noiseModel, out.size() - 1);
 		out.back().sd_x = spread.sd_x, out.back().sd_y = spread.sd_y, out.back().sd_yaw = spread.sd_yaw;
 	}

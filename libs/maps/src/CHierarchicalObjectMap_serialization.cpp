@@ -5,7 +5,9 @@
 // (the likelihood then knows no free space); versions before 6 with sigma_corner = sigma_r and
 // no revisions; versions before 7 without the counts per move type; versions before 8 without
 // size moves (every lasting table at its class's size); versions before 9 without the last
-// insertion's sensor noise; versions before 10 without the walls' end-cap costs (0).
+// insertion's sensor noise; versions before 10 without the walls' end-cap costs (0); versions
+// before 11 with every class's legs nominal; versions before 12 with every sweep annealed at
+// once; versions before 13 without the posterior chain's pose spreads (none).
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/model/ObjectCatalogue.h>
@@ -291,9 +293,31 @@ void readLegSpreads(CArchive& in, model::ModelParams& m)
 				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt object class (leg width or texture spread not a number in [0, 1])");
 	}
 }
+
+/** Per live table, in id order (writeLasting's): its posterior chain's pose spread. */
+void writeChainSpreads(CArchive& out, const model::LastingState& s)
+{
+	for (model::Id t = 0; t < s.tableIdBound(); t++)
+		if (s.hasTable(t)) out << s.chainSpread(t).sd_x << s.chainSpread(t).sd_y << s.chainSpread(t).sd_yaw;
+}
+
+/** After restore(), which numbers the tables densely in stream order. */
+void readChainSpreads(CArchive& in, model::LastingState& s)
+{
+	for (model::Id t = 0; t < s.tableIdBound(); t++)
+	{
+		model::LastingState::ChainSpread c;
+		in >> c.sd_x >> c.sd_y >> c.sd_yaw;
+		const bool none = c.sd_x == -1 && c.sd_y == -1 && c.sd_yaw == -1;
+		for (const double v : {c.sd_x, c.sd_y, c.sd_yaw})
+			if (!none && !(v >= 0 && v <= 1e3))
+				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt pose spread (not -1 for none, nor a number in [0, 1000])");
+		s.setChainSpread(t, c);
+	}
+}
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 12; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 13; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -357,6 +381,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	writeLegSpreads(out, m);
 	// Version 12: sweeps annealed together, and the sweeps pending (inserted, not annealed).
 	out << l.batch_sweeps << m_lasting.pendingSweeps() << m_lasting.pendingFrom();
+	// Version 13: the lasting tables' pose spreads from the posterior chain (-1: none).
+	writeChainSpreads(out, m_lasting.state());
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -376,6 +402,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 10:
 		case 11:
 		case 12:
+		case 13:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -480,6 +507,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 					lasting.seq, m);
 				m_lasting.state().restoreWalls(walls);
 				m_lasting.setPending(pendingSweeps, pendingFrom);
+				if (version >= 13) readChainSpreads(in, m_lasting.state());
 			}
 			if (!(m.sigma_corner > 0) || !std::isfinite(m.sigma_corner))
 				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt model (sigma_corner not a positive number)");

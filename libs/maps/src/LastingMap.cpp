@@ -43,7 +43,7 @@ inference::SamplerParams localSampler(inference::SamplerParams p, const LastingM
 
 std::vector<double> LastingMap::existence(
 	const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model,
-	const inference::SamplerParams& sampler, uint64_t seed)
+	const inference::SamplerParams& sampler, uint64_t seed, std::vector<model::LastingState::ChainSpread>& spread)
 {
 	// Where legs changed (came, went, moved, relinked, gained contacts): a table's existence
 	// depends on its own legs and on the legs that could pair with them (TableExistence), so
@@ -59,6 +59,7 @@ std::vector<double> LastingMap::existence(
 	}
 	const double reach = std::hypot(model.table_length, model.table_width) + 3 * model.parent_gate;
 	std::vector<double> out(static_cast<size_t>(solved.tableIdBound()), 0.0);
+	spread.assign(out.size(), {});
 	std::vector<model::Id> rescored;
 	for (model::Id t = 0; t < solved.tableIdBound(); t++)
 	{
@@ -70,7 +71,10 @@ std::vector<double> LastingMap::existence(
 			for (const auto& [x, y] : changed)
 				same = same && std::hypot(x - solved.leg(l).x, y - solved.leg(l).y) > reach;
 		if (same)
+		{
 			out[static_cast<size_t>(t)] = m_state.existence(m_region->tables[static_cast<size_t>(t)]);
+			spread[static_cast<size_t>(t)] = m_state.chainSpread(m_region->tables[static_cast<size_t>(t)]);
+		}
 		else
 			rescored.push_back(t);
 	}
@@ -83,7 +87,12 @@ std::vector<double> LastingMap::existence(
 	if (!m_posterior) m_posterior = std::make_unique<inference::PosteriorChain>(model, sampler);
 	const long burnIn = sampler.posterior_steps / 5;
 	const auto chain = m_posterior->run(solved, seed ^ 0x5851F42D4C957F2DULL, burnIn, (sampler.posterior_steps - burnIn) / 5, 5);
-	for (const model::Id t : rescored) out[static_cast<size_t>(t)] = chain[static_cast<size_t>(t)].existence;
+	for (const model::Id t : rescored)
+	{
+		const auto& c = chain[static_cast<size_t>(t)];
+		out[static_cast<size_t>(t)] = c.existence;
+		if (c.existence > 0) spread[static_cast<size_t>(t)] = {c.sd_x, c.sd_y, c.sd_yaw};
+	}
 	return out;
 }
 
@@ -230,7 +239,9 @@ LastingMap::TStats LastingMap::solve(
 			if (sameFitData(board, solved, b))
 				m_carry.emplace_back(b, m_state.reported(m_region->tables[static_cast<size_t>(b)]));
 	}
-	m_state.replace(*m_region, solved, existence(board, solved, model, sampler, seed), m_newTables, m_newLegs, wallExistence(solved), model);
+	m_state.replace(*m_region, solved, existence(board, solved, model, sampler, seed, m_spread), m_newTables, m_newLegs, wallExistence(solved), model);
+	for (size_t b = 0; b < m_newTables.size(); b++)
+		if (m_newTables[b] != model::NONE) m_state.setChainSpread(m_newTables[b], m_spread[b]);
 	// No two legs in one place: the search may pass through overlaps (eq. 16 is soft), the
 	// stored map may not (doc/map-plugin.md). The merged legs' tables are refitted.
 	m_merged.clear();

@@ -50,10 +50,12 @@ Id LastingState::addTable(const Table& t, double existence)
 	const Id id = m_tables.add(t);
 	growTo(m_existence, m_tables.capacity(), 0.0);
 	growTo(m_reported, m_tables.capacity());
+	growTo(m_chainSpread, m_tables.capacity());
 	growTo(m_tableLegs, m_tables.capacity());
 	growTo(m_tableMark, m_tables.capacity(), 0u);
 	m_existence[id] = existence;
 	m_reported[id] = t;
+	m_chainSpread[id] = {};
 	m_tableLegs[id].clear();
 	m_tableGrid.insert(id, t.x, t.y);
 	return id;

@@ -149,10 +149,12 @@ class LastingMap
 	static model::ModelParams reportModel(const model::ModelParams& model);
 	/** Existence of each table of `solved` (grown from `start`, the region's board): the
 	 *  tables near a change scored again, by TableExistence or, with the sampler's
-	 *  posterior_steps, by the posterior chain from `solved` (seeded from `seed`). */
+	 *  posterior_steps, by the posterior chain from `solved` (seeded from `seed`). `spread`
+	 *  gets each table's chain pose spread: the chain's for those it scored, the stored one for
+	 *  the rest (none where TableExistence scored). */
 	std::vector<double> existence(
 		const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model,
-		const inference::SamplerParams& sampler, uint64_t seed);
+		const inference::SamplerParams& sampler, uint64_t seed, std::vector<model::LastingState::ChainSpread>& spread);
 	/** Existence of each wall of `solved`: the logistic of its log-odds (model::logOddsWall). */
 	static std::vector<double> wallExistence(const model::Blackboard& solved);
 	/** Refits the reported pose of every table whose legs the last replace() may have changed:
@@ -175,5 +177,6 @@ class LastingMap
 	inference::TableExistence m_existence;
 	std::vector<model::Id> m_new, m_newTables, m_newLegs, m_refit, m_merged;
 	std::vector<std::pair<model::Id, model::Table>> m_carry;
+	std::vector<model::LastingState::ChainSpread> m_spread;  ///< existence()'s, by board id
 };
 }  // namespace whiskermap::maps

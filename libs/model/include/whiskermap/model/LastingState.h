@@ -47,6 +47,14 @@ class LastingState
 		WallEvidence evidence;
 		double existence = 0;
 	};
+	/** A table's pose spread from a posterior chain (issue 10; inference::PosteriorChain):
+	 *  standard deviations of its centre (metres) and yaw (radians). sd_x < 0: none (the map
+	 *  then reports inference::rigidPoseSpread's). */
+	struct ChainSpread
+	{
+		double sd_x = -1, sd_y = -1, sd_yaw = -1;
+		bool known() const { return sd_x >= 0; }
+	};
 	/** A local problem: the board and, per board id, the store id it came from (NONE: new). */
 	struct Region
 	{
@@ -111,6 +119,9 @@ class LastingState
 	 *  fit once setReported() was called, else the table itself. */
 	const Table& reported(Id t) const { return m_reported[t]; }
 	void setReported(Id t, const Table& pose) { m_reported[t] = pose; }
+	/** Table t's pose spread from the last posterior chain that scored it (none: not scored by one). */
+	const ChainSpread& chainSpread(Id t) const { return m_chainSpread[t]; }
+	void setChainSpread(Id t, const ChainSpread& s) { m_chainSpread[t] = s; }
 	const Leg& leg(Id l) const { return m_legs[l]; }
 	const LegEvidence& evidence(Id l) const { return m_evidence[l]; }
 	const Contact& contact(Id c) const { return m_contacts[c]; }
@@ -147,6 +158,7 @@ class LastingState
 	SlotVector<Contact> m_contacts;
 	std::vector<double> m_existence;
 	std::vector<Table> m_reported;
+	std::vector<ChainSpread> m_chainSpread;
 	std::vector<LegEvidence> m_evidence;
 	std::vector<std::vector<Id>> m_tableLegs, m_legContacts;
 	SpatialGrid m_tableGrid, m_legGrid, m_contactGrid;  ///< contacts: the unexplained ones
