@@ -73,15 +73,25 @@ std::string fingerprint(const CHierarchicalObjectMap& m)
 	return o.str();
 }
 
-/** `a` written to a stream and read back (null if it did not read back as a map). */
-std::shared_ptr<CHierarchicalObjectMap> reloaded(const CHierarchicalObjectMap& a)
+/** `a` as the bytes of its stream. */
+std::vector<uint8_t> bytesOf(const CHierarchicalObjectMap& a)
 {
 	mrpt::io::CMemoryStream buf;
-	auto arch = mrpt::serialization::archiveFrom(buf);
-	arch << a;
-	buf.Seek(0);
-	return std::dynamic_pointer_cast<CHierarchicalObjectMap>(arch.ReadObject());
+	mrpt::serialization::archiveFrom(buf) << a;
+	const auto* begin = static_cast<const uint8_t*>(buf.getRawBufferData());
+	return {begin, begin + buf.getTotalBytesCount()};
 }
+
+/** A map read from stream bytes (null if they hold another object; throws if corrupt). */
+std::shared_ptr<CHierarchicalObjectMap> fromBytes(std::vector<uint8_t> v)
+{
+	mrpt::io::CMemoryStream in;
+	in.assignMemoryNotOwn(v.data(), v.size());
+	return std::dynamic_pointer_cast<CHierarchicalObjectMap>(mrpt::serialization::archiveFrom(in).ReadObject());
+}
+
+/** `a` written to a stream and read back (null if it did not read back as a map). */
+std::shared_ptr<CHierarchicalObjectMap> reloaded(const CHierarchicalObjectMap& a) { return fromBytes(bytesOf(a)); }
 
 /** The lasting state as a sorted list of its tables and legs (a leg names its parent by the
  *  parent's position): independent of store ids, which a reload renumbers densely. */
@@ -352,24 +362,16 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheLegSpreads)
 	const auto b = reloaded(a);
 	ASSERT_TRUE(b);
 	EXPECT_EQ(b->modelParams, a.modelParams);
-	mrpt::io::CMemoryStream buf;
-	mrpt::serialization::archiveFrom(buf) << a;
-	const auto* begin = static_cast<const uint8_t*>(buf.getRawBufferData());
-	const std::vector<uint8_t> bytes(begin, begin + buf.getTotalBytesCount());
+	const std::vector<uint8_t> bytes = bytesOf(a);
 	const size_t version = 1 + std::string("whiskermap::maps::CHierarchicalObjectMap").size();
 	ASSERT_EQ(bytes[version], 13);
-	const auto load = [](std::vector<uint8_t> v) {
-		mrpt::io::CMemoryStream in;
-		in.assignMemoryNotOwn(v.data(), v.size());
-		return std::dynamic_pointer_cast<CHierarchicalObjectMap>(mrpt::serialization::archiveFrom(in).ReadObject());
-	};
 	// The tail before version 12's batch (16 bytes), version 13's chain spreads (none: no
 	// table) and MRPT's end flag: two doubles per class, class 2's leg width spread first.
 	const long tail = 16 * static_cast<long>(a.modelParams.classes.size()), batch = 16;
 	std::vector<uint8_t> old = bytes;
 	old[version] = 10;
 	old.erase(old.end() - 1 - batch - tail, old.end() - 1);
-	const auto c = load(old);
+	const auto c = fromBytes(old);
 	ASSERT_TRUE(c);
 	EXPECT_FALSE(c->modelParams.legsVary());
 	EXPECT_EQ(c->modelParams.classes.size(), a.modelParams.classes.size());
@@ -377,7 +379,7 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheLegSpreads)
 	{
 		std::vector<uint8_t> bad = bytes;
 		std::memcpy(bad.data() + bad.size() - 1 - batch - tail + 2 * 16, &corrupt, sizeof corrupt);
-		EXPECT_ANY_THROW(load(bad)) << corrupt;
+		EXPECT_ANY_THROW(fromBytes(bad)) << corrupt;
 	}
 }
 
@@ -397,16 +399,8 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheSweepsPending)
 	EXPECT_EQ(b->insertionOptions.lasting.batch_sweeps, 4u);
 	EXPECT_EQ(b->lastingMap().pendingSweeps(), 2u);
 	EXPECT_EQ(b->lastingMap().pendingFrom(), a.lastingMap().pendingFrom());
-	mrpt::io::CMemoryStream buf;
-	mrpt::serialization::archiveFrom(buf) << a;
-	const auto* begin = static_cast<const uint8_t*>(buf.getRawBufferData());
-	const std::vector<uint8_t> bytes(begin, begin + buf.getTotalBytesCount());
-	const auto load = [](std::vector<uint8_t> v) {
-		mrpt::io::CMemoryStream in;
-		in.assignMemoryNotOwn(v.data(), v.size());
-		return std::dynamic_pointer_cast<CHierarchicalObjectMap>(mrpt::serialization::archiveFrom(in).ReadObject());
-	};
-	ASSERT_TRUE(load(bytes));
+	const std::vector<uint8_t> bytes = bytesOf(a);
+	ASSERT_TRUE(fromBytes(bytes));
 	// Before MRPT's end flag: batch_sweeps (uint32), sweeps pending (uint32), first pending seq (uint64).
 	const size_t at = bytes.size() - 1 - 16;
 	const auto corrupt = [&](size_t offset, auto value) {
@@ -414,11 +408,11 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheSweepsPending)
 		std::memcpy(bad.data() + at + offset, &value, sizeof value);
 		return bad;
 	};
-	EXPECT_ANY_THROW(load(corrupt(0, uint32_t{0})));
-	EXPECT_ANY_THROW(load(corrupt(0, uint32_t{1001})));
-	EXPECT_ANY_THROW(load(corrupt(4, uint32_t{4})));
-	EXPECT_ANY_THROW(load(corrupt(8, uint64_t{1} << 40)));
-	EXPECT_TRUE(load(corrupt(4, uint32_t{3})));
+	EXPECT_ANY_THROW(fromBytes(corrupt(0, uint32_t{0})));
+	EXPECT_ANY_THROW(fromBytes(corrupt(0, uint32_t{1001})));
+	EXPECT_ANY_THROW(fromBytes(corrupt(4, uint32_t{4})));
+	EXPECT_ANY_THROW(fromBytes(corrupt(8, uint64_t{1} << 40)));
+	EXPECT_TRUE(fromBytes(corrupt(4, uint32_t{3})));
 }
 
 // Version 13 stores each lasting table's pose spread from the posterior chain (sampler key
@@ -449,22 +443,14 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheChainsPoseSpreads)
 	}
 	EXPECT_EQ(known(b->lastingMap().state()), known(st));
 
-	mrpt::io::CMemoryStream buf;
-	mrpt::serialization::archiveFrom(buf) << a;
-	const auto* begin = static_cast<const uint8_t*>(buf.getRawBufferData());
-	const std::vector<uint8_t> bytes(begin, begin + buf.getTotalBytesCount());
+	const std::vector<uint8_t> bytes = bytesOf(a);
 	const size_t version = 1 + std::string("whiskermap::maps::CHierarchicalObjectMap").size();
 	ASSERT_EQ(bytes[version], 13);
-	const auto load = [](std::vector<uint8_t> v) {
-		mrpt::io::CMemoryStream in;
-		in.assignMemoryNotOwn(v.data(), v.size());
-		return std::dynamic_pointer_cast<CHierarchicalObjectMap>(mrpt::serialization::archiveFrom(in).ReadObject());
-	};
 	const long tail = 24 * static_cast<long>(st.tableCount());  // three doubles per table, before the end flag
 	std::vector<uint8_t> old = bytes;
 	old[version] = 12;
 	old.erase(old.end() - 1 - tail, old.end() - 1);
-	const auto c = load(old);
+	const auto c = fromBytes(old);
 	ASSERT_TRUE(c);
 	EXPECT_EQ(c->lastingMap().state().tableCount(), st.tableCount());
 	EXPECT_EQ(known(c->lastingMap().state()), 0u);
@@ -472,7 +458,7 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheChainsPoseSpreads)
 	{
 		std::vector<uint8_t> bad = bytes;
 		std::memcpy(bad.data() + bad.size() - 1 - tail, &corrupt, sizeof corrupt);
-		EXPECT_ANY_THROW(load(bad)) << corrupt;
+		EXPECT_ANY_THROW(fromBytes(bad)) << corrupt;
 	}
 }
 
