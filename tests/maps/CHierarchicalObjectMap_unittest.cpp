@@ -73,6 +73,13 @@ std::string fingerprint(const CHierarchicalObjectMap& m)
 	return o.str();
 }
 
+/** Version 14's tail, the stream's last bytes before MRPT's end flag: manhattan_walls (a bool)
+ *  and wall_axis (a double). */
+constexpr long MANHATTAN_BYTES = 1 + 8;
+
+/** The byte of a map stream that holds its version (after MRPT's class name). */
+const size_t VERSION_BYTE = 1 + std::string("whiskermap::maps::CHierarchicalObjectMap").size();
+
 /** `a` as the bytes of its stream. */
 std::vector<uint8_t> bytesOf(const CHierarchicalObjectMap& a)
 {
@@ -363,13 +370,13 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheLegSpreads)
 	ASSERT_TRUE(b);
 	EXPECT_EQ(b->modelParams, a.modelParams);
 	const std::vector<uint8_t> bytes = bytesOf(a);
-	const size_t version = 1 + std::string("whiskermap::maps::CHierarchicalObjectMap").size();
-	ASSERT_EQ(bytes[version], 13);
+	ASSERT_EQ(bytes[VERSION_BYTE], 14);
 	// The tail before version 12's batch (16 bytes), version 13's chain spreads (none: no
-	// table) and MRPT's end flag: two doubles per class, class 2's leg width spread first.
-	const long tail = 16 * static_cast<long>(a.modelParams.classes.size()), batch = 16;
+	// table), version 14's and MRPT's end flag: two doubles per class, class 2's leg width
+	// spread first.
+	const long tail = 16 * static_cast<long>(a.modelParams.classes.size()), batch = 16 + MANHATTAN_BYTES;
 	std::vector<uint8_t> old = bytes;
-	old[version] = 10;
+	old[VERSION_BYTE] = 10;
 	old.erase(old.end() - 1 - batch - tail, old.end() - 1);
 	const auto c = fromBytes(old);
 	ASSERT_TRUE(c);
@@ -401,8 +408,9 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheSweepsPending)
 	EXPECT_EQ(b->lastingMap().pendingFrom(), a.lastingMap().pendingFrom());
 	const std::vector<uint8_t> bytes = bytesOf(a);
 	ASSERT_TRUE(fromBytes(bytes));
-	// Before MRPT's end flag: batch_sweeps (uint32), sweeps pending (uint32), first pending seq (uint64).
-	const size_t at = bytes.size() - 1 - 16;
+	// Before version 14's tail and MRPT's end flag (no table: no chain spreads): batch_sweeps
+	// (uint32), sweeps pending (uint32), first pending seq (uint64).
+	const size_t at = bytes.size() - 1 - MANHATTAN_BYTES - 16;
 	const auto corrupt = [&](size_t offset, auto value) {
 		std::vector<uint8_t> bad = bytes;
 		std::memcpy(bad.data() + at + offset, &value, sizeof value);
@@ -444,12 +452,11 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheChainsPoseSpreads)
 	EXPECT_EQ(known(b->lastingMap().state()), known(st));
 
 	const std::vector<uint8_t> bytes = bytesOf(a);
-	const size_t version = 1 + std::string("whiskermap::maps::CHierarchicalObjectMap").size();
-	ASSERT_EQ(bytes[version], 13);
-	const long tail = 24 * static_cast<long>(st.tableCount());  // three doubles per table, before the end flag
+	ASSERT_EQ(bytes[VERSION_BYTE], 14);
+	const long tail = 24 * static_cast<long>(st.tableCount());  // three doubles per table, before version 14's
 	std::vector<uint8_t> old = bytes;
-	old[version] = 12;
-	old.erase(old.end() - 1 - tail, old.end() - 1);
+	old[VERSION_BYTE] = 12;
+	old.erase(old.end() - 1 - MANHATTAN_BYTES - tail, old.end() - 1);
 	const auto c = fromBytes(old);
 	ASSERT_TRUE(c);
 	EXPECT_EQ(c->lastingMap().state().tableCount(), st.tableCount());
@@ -457,7 +464,35 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheChainsPoseSpreads)
 	for (const double corrupt : {std::nan(""), -0.5, 2e3})
 	{
 		std::vector<uint8_t> bad = bytes;
-		std::memcpy(bad.data() + bad.size() - 1 - tail, &corrupt, sizeof corrupt);
+		std::memcpy(bad.data() + bad.size() - 1 - MANHATTAN_BYTES - tail, &corrupt, sizeof corrupt);
+		EXPECT_ANY_THROW(fromBytes(bad)) << corrupt;
+	}
+}
+
+// Version 14 stores Manhattan walls (model keys manhattan_walls, wall_axis_deg); a version 13
+// stream (the same bytes without them) loads with walls at any yaw, and an axis outside
+// [-pi/2, pi/2] is refused.
+TEST(CHierarchicalObjectMap, SerializationKeepsManhattanWalls)
+{
+	CHierarchicalObjectMap a;
+	a.modelParams.walls = a.modelParams.manhattan_walls = true;
+	a.modelParams.wall_axis = 0.3;
+	const auto b = reloaded(a);
+	ASSERT_TRUE(b);
+	EXPECT_EQ(b->modelParams, a.modelParams);
+	const std::vector<uint8_t> bytes = bytesOf(a);
+	ASSERT_EQ(bytes[VERSION_BYTE], 14);
+	std::vector<uint8_t> old = bytes;
+	old[VERSION_BYTE] = 13;
+	old.erase(old.end() - 1 - MANHATTAN_BYTES, old.end() - 1);
+	const auto c = fromBytes(old);
+	ASSERT_TRUE(c);
+	EXPECT_FALSE(c->modelParams.manhattan_walls);
+	EXPECT_FALSE(c->modelParams.wallAxis());
+	for (const double corrupt : {std::nan(""), 2.0, -1.6})
+	{
+		std::vector<uint8_t> bad = bytes;
+		std::memcpy(bad.data() + bad.size() - 1 - 8, &corrupt, sizeof corrupt);
 		EXPECT_ANY_THROW(fromBytes(bad)) << corrupt;
 	}
 }

@@ -2,6 +2,7 @@
 // hand-computed values, and the folded evidence against the densities it sums.
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <whiskermap/core/Angles.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/core/IniSection.h>
 #include <whiskermap/model/Densities.h>
@@ -268,6 +269,34 @@ TEST(WallEvidence, FitRecoversATurnedWall)
 	EXPECT_NEAR(fit.nearestFace(1 + 0.05 * s, 1 - 0.05 * c).across, 0, 1e-6);
 }
 
+// Manhattan walls (model keys manhattan_walls, wall_axis_deg): the fit's yaw is held to the
+// axis or at right angles to it, the nearest to the free optimum; the offset is the best at it.
+TEST(WallEvidence, FitHeldToAnAxisTurnsToItsNearestDirection)
+{
+	const ModelParams p = handParams();
+	for (const double a : {0.05, M_PI_2 - 0.04, -0.6})  // 3 degrees off the x axis, 2 off the y axis, a diagonal
+	{
+		const double c = std::cos(a), s = std::sin(a);
+		const Wall truth{1, 1, 1 + 2 * c, 1 + 2 * s, 0.1, 0.3};
+		WallEvidence e;
+		for (int i = 0; i <= 8; i++)
+		{
+			const double t = 0.25 * i;
+			e.add(contact(1 + t * c - 0.05 * s, 1 + t * s + 0.05 * c, a + M_PI_2, 0.3), truth, p);
+		}
+		const Wall free = e.fit(0.1), held = e.fit(0.1, 0.0), turned = e.fit(0.1, 0.3);
+		const auto yaw = [](const Wall& w) { return std::atan2(w.y1 - w.y0, w.x1 - w.x0); };
+		EXPECT_NEAR(whiskermap::core::angleDiff(yaw(free), a, M_PI), 0, 1e-6) << a;
+		const double nearest = std::round(a / M_PI_2) * M_PI_2, nearestTurned = 0.3 + std::round((a - 0.3) / M_PI_2) * M_PI_2;
+		EXPECT_NEAR(whiskermap::core::angleDiff(yaw(held), nearest, M_PI), 0, 1e-12) << a;
+		EXPECT_NEAR(whiskermap::core::angleDiff(yaw(turned), nearestTurned, M_PI), 0, 1e-12) << a;
+		// The held wall passes through the contacts' mean (the closed-form offset at its yaw)
+		// and scores worse than the free fit, which is the optimum.
+		EXPECT_NEAR(held.nearestFace(1 + c - 0.05 * s, 1 + s + 0.05 * c).across, 0, 1e-6) << a;
+		EXPECT_LT(e.logLikelihood(held, p), e.logLikelihood(free, p)) << a;
+	}
+}
+
 TEST(ModelParams, WallKeysAreStrict)
 {
 	const auto parse = [](const std::string& extra) {
@@ -288,4 +317,12 @@ TEST(ModelParams, WallKeysAreStrict)
 	EXPECT_THROW(parse("walls=yes please\n"), whiskermap::core::Error);
 	EXPECT_THROW(parse("c_W=0\n"), whiskermap::core::Error);
 	EXPECT_THROW(parse("wall_thickness=-1\n"), whiskermap::core::Error);
+	EXPECT_FALSE(on.wallAxis());
+	const ModelParams manhattan = parse("walls=true\nmanhattan_walls=true\nwall_axis_deg=30\n");
+	ASSERT_TRUE(manhattan.wallAxis());
+	EXPECT_NEAR(*manhattan.wallAxis(), M_PI / 6, 1e-15);
+	EXPECT_FALSE(manhattan == parse("walls=true\nmanhattan_walls=true\n"));
+	EXPECT_DOUBLE_EQ(*parse("manhattan_walls=true\n").wallAxis(), 0);
+	EXPECT_THROW(parse("wall_axis_deg=91\n"), whiskermap::core::Error);
+	EXPECT_THROW(parse("manhattan_walls=2\n"), whiskermap::core::Error);
 }

@@ -67,6 +67,12 @@ TEST_F(TSlamParamsTest, StrictKeysAndValues)
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nproposal_samples = 0\n")), core::Error);
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\n[other]\n")), core::Error);
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nodometry_model = bumpy\n")), core::Error);
+	const auto manhattan = slam::TSlamParams::load(ini("[slam]\nmanhattan_walls = true\nwall_axis_deg = -30\n"));
+	EXPECT_TRUE(manhattan.manhattan_walls);
+	EXPECT_NEAR(manhattan.wall_axis, -M_PI / 6, 1e-15);
+	EXPECT_FALSE(slam::TSlamParams::load(ini("[slam]\n")).manhattan_walls);
+	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nwall_axis_deg = 120\n")), core::Error);
+	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nmanhattan_walls = maybe\n")), core::Error);
 	EXPECT_THROW(slam::TSlamParams::load(path("missing.ini")), core::Error);
 	// Exact odometry needs no [motion_model] (its matched model has zero noise); a noisy file
 	// without one is refused.

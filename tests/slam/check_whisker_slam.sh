@@ -64,4 +64,15 @@ awk -v e="$est_c" -v o="$odo" 'BEGIN { exit !(e > 0 && e < 0.5 && e <= 2.5 * o) 
 "$slam" -q -i "${data}_obs.rawlog" -o "$work/d" --particles $particles --sweeps 60 --seed 8
 head -62 "$work/a/estimated_path.txt" > "$work/a_prefix.txt"
 if cmp -s "$work/a_prefix.txt" "$work/d/estimated_path.txt"; then echo "FAIL: --seed 8 gave seed 7's path"; exit 1; fi
+
+# [slam] manhattan_walls: every particle's map holds walls, each along the axis or at right
+# angles to it, and the map written holds them (map_walls.csv: x0 = x1 or y0 = y1).
+sed 's/^manhattan_walls = false/manhattan_walls = true /; s#^map_config = whisker-map.ini#map_config = '"$src"'/config/whisker-map.ini#' \
+  "$src/config/whisker-slam.ini" > "$work/manhattan.ini"
+grep -q '^manhattan_walls = true' "$work/manhattan.ini" || { echo "FAIL: could not turn manhattan_walls on"; exit 1; }
+"$slam" -q -c "$work/manhattan.ini" -i "${data}_obs.rawlog" -o "$work/m" --world "$world" --particles 5 --sweeps 120 --seed 7
+[[ $(grep -c . "$work/m/map_walls.csv") -ge 2 ]] || { echo "FAIL: no wall in the Manhattan map"; exit 1; }
+awk -F, 'NR > 1 && ($1 - $3) ^ 2 > 1e-12 && ($2 - $4) ^ 2 > 1e-12 { bad++ } END { exit bad > 0 }' "$work/m/map_walls.csv" ||
+  { echo "FAIL: a wall off the axes"; cat "$work/m/map_walls.csv"; exit 1; }
+echo "manhattan walls: $(($(grep -c . "$work/m/map_walls.csv") - 1)) walls, all on the axes"
 echo "ok: whisker-slam outputs, the filter keeps track, reproducible; both layouts"

@@ -53,7 +53,7 @@ std::optional<WallCandidate> proposeWall(const model::Blackboard& bb, size_t see
 		e.add(bb.shapelets()[static_cast<size_t>(along[k].second)], guide, p);
 	}
 	std::sort(c.inliers.begin(), c.inliers.end());
-	c.wall = e.fit(p.wall_thickness);
+	c.wall = e.fit(p.wall_thickness, p.wallAxis());
 	return c;
 }
 
@@ -62,7 +62,7 @@ bool fitWall(const model::Blackboard& bb, Id w, model::Wall& out)
 	if (!bb.wallExplains(w)) return false;
 	model::WallEvidence e = bb.wallEvidence(w);
 	for (const Id s : bb.shapeletsOfWall(w)) e.add(bb.shapelets()[static_cast<size_t>(s)], bb.wall(w), bb.params());
-	out = e.fit(bb.params().wall_thickness);
+	out = e.fit(bb.params().wall_thickness, bb.params().wallAxis());
 	return true;
 }
 }  // namespace whiskermap::inference

@@ -7,7 +7,8 @@
 // size moves (every lasting table at its class's size); versions before 9 without the last
 // insertion's sensor noise; versions before 10 without the walls' end-cap costs (0); versions
 // before 11 with every class's legs nominal; versions before 12 with every sweep annealed at
-// once; versions before 13 without the posterior chain's pose spreads (none).
+// once; versions before 13 without the posterior chain's pose spreads (none); versions before
+// 14 without Manhattan walls.
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/model/ObjectCatalogue.h>
@@ -317,7 +318,7 @@ void readChainSpreads(CArchive& in, model::LastingState& s)
 }
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 13; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 14; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -383,6 +384,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	out << l.batch_sweeps << m_lasting.pendingSweeps() << m_lasting.pendingFrom();
 	// Version 13: the lasting tables' pose spreads from the posterior chain (-1: none).
 	writeChainSpreads(out, m_lasting.state());
+	// Version 14: Manhattan walls.
+	out << m.manhattan_walls << m.wall_axis;
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -403,6 +406,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 11:
 		case 12:
 		case 13:
+		case 14:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -508,6 +512,13 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 				m_lasting.state().restoreWalls(walls);
 				m_lasting.setPending(pendingSweeps, pendingFrom);
 				if (version >= 13) readChainSpreads(in, m_lasting.state());
+			}
+			m.manhattan_walls = false;  // versions before 14: walls at any yaw
+			if (version >= 14)
+			{
+				in >> m.manhattan_walls >> m.wall_axis;
+				if (!(std::abs(m.wall_axis) <= M_PI_2))
+					THROW_EXCEPTION("CHierarchicalObjectMap: corrupt model (wall_axis not a number in [-pi/2, pi/2])");
 			}
 			if (!(m.sigma_corner > 0) || !std::isfinite(m.sigma_corner))
 				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt model (sigma_corner not a positive number)");

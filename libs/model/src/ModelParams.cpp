@@ -1,3 +1,4 @@
+#include <whiskermap/core/Angles.h>
 #include <whiskermap/model/ModelParams.h>
 #include <whiskermap/model/ObjectCatalogue.h>
 
@@ -38,6 +39,8 @@ ModelParams ModelParams::fromIni(core::IniSection& sec)
 	p.c_W = sec.number("c_W", p.c_W, 1e-300, BIG);
 	p.wall_length_scale = sec.number("wall_length_scale", p.wall_length_scale, 1e-3, 1e6);
 	p.wall_thickness = sec.number("wall_thickness", p.wall_thickness, 1e-3, 10);
+	p.manhattan_walls = sec.boolean("manhattan_walls", p.manhattan_walls);
+	p.wall_axis = core::deg2rad(sec.number("wall_axis_deg", core::rad2deg(p.wall_axis), -90, 90));
 	const std::string objects = sec.text("objects", "");
 	p.size_moves = sec.boolean("size_moves", p.size_moves);
 	sec.finish();
@@ -79,6 +82,7 @@ bool ModelParams::operator==(const ModelParams& o) const
 			p.sigma_r, p.sigma_theta, p.sigma_w, p.sigma_tau, p.sigma_corner, p.shaft_noise, p.sigma_across, p.c_T, p.c_L, p.c_S,
 			p.alpha_L, p.alpha_S, p.epsilon, p.delta, p.table_length, p.table_width, p.leg_width, p.texture,
 			p.parent_gate, p.free_space, p.free_space_p_miss, p.walls, p.c_W, p.wall_length_scale, p.wall_thickness,
+			p.manhattan_walls, p.wall_axis,
 			p.classes, p.size_moves);
 	};
 	return tie(*this) == tie(o);

@@ -90,7 +90,7 @@ double WallEvidence::logLikelihood(const Wall& w, const ModelParams& p) const
 	return m_count * std::log(p.alpha_S) - cost(d, normalAt(d), c, w.thickness) - tex - m_capCost;  // eq. 22, summed
 }
 
-Wall WallEvidence::fit(double thickness) const
+Wall WallEvidence::fit(double thickness, std::optional<double> axis) const
 {
 	// Golden section over the yaw offset about the mean normal error; the offset in closed form.
 	const double mean = m_wa > 0 ? m_sa / m_wa : 0;
@@ -106,7 +106,9 @@ Wall WallEvidence::fit(double thickness) const
 		if (fa < fb) hi = b, b = a, fb = fa, a = hi - g * (hi - lo), fa = f(a);
 		else lo = a, a = b, fa = fb, b = lo + g * (hi - lo), fb = f(b);
 	}
-	const double d = (lo + hi) / 2;
+	double d = (lo + hi) / 2;
+	if (axis)  // the face normal m_phi + d held to axis + k pi/2, the nearest k
+		d = *axis + std::round((m_phi + d - *axis) / M_PI_2) * M_PI_2 - m_phi;
 	const Normal n = normalAt(d);
 	const double c = bestOffset(n, thickness), nx = n.x, ny = n.y, ux = ny, uy = -nx;
 	const double cx = m_ax + c * nx, cy = m_ay + c * ny;  // a point of the centre line

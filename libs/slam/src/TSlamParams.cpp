@@ -1,3 +1,4 @@
+#include <whiskermap/core/Angles.h>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/core/IniSection.h>
 #include <whiskermap/slam/TSlamParams.h>
@@ -40,6 +41,8 @@ TSlamParams TSlamParams::load(const std::string& path)
 	p.motion_noise_scale = sec.number("motion_noise_scale", p.motion_noise_scale, 0.01, 100);
 	p.proposal_samples = static_cast<unsigned>(sec.integer("proposal_samples", p.proposal_samples, 1, 10000));
 	p.batch_sweeps = static_cast<unsigned>(sec.integer("batch_sweeps", p.batch_sweeps, 0, 1000));
+	p.manhattan_walls = sec.boolean("manhattan_walls", p.manhattan_walls);
+	p.wall_axis = core::deg2rad(sec.number("wall_axis_deg", core::rad2deg(p.wall_axis), -90, 90));
 	p.resample_ess = sec.number("resample_ess", p.resample_ess, 0, 1);
 	const std::map<std::string, PF::TParticleResamplingAlgorithm> methods = {
 		{"multinomial", PF::prMultinomial}, {"residual", PF::prResidual},

@@ -3,6 +3,7 @@
 #include <whiskermap/model/ObjectClass.h>
 #include <whiskermap/model/Table.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,12 @@ struct ModelParams
 	double c_W = 1e-7;  ///< wall prior density per (x, y, yaw, length) (eq. 23)
 	double wall_length_scale = 5.0;  ///< lambda_W of eq. 23's exponential length prior, metres
 	double wall_thickness = 0.1;  ///< thickness of every wall hypothesis (one class), metres
+	/** Manhattan walls (eq. 23's yaw prior a point mass, ours: doc/model.md, "Manhattan
+	 *  walls"): every wall runs along `wall_axis` or at right angles to it. */
+	bool manhattan_walls = false;
+	double wall_axis = 0;  ///< radians, world frame (key wall_axis_deg, degrees in [-90, 90])
+	/** The direction walls are held to, if manhattan_walls (WallEvidence::fit). */
+	std::optional<double> wallAxis() const { return manhattan_walls ? std::optional<double>(wall_axis) : std::nullopt; }
 
 	/** Dimension moves (issue 11, eq. 24: doc/model.md, "Object sizes"; optional key, needs
 	 *  `objects`): each table's length and width are inferred about its class's nominal ones

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 namespace whiskermap::model
 {
@@ -31,8 +32,10 @@ class WallEvidence
 	/** The wall of thickness `thickness` minimising the folded contacts' sum of Delta_WS (eq. 22)
 	 *  over yaw and centre-line offset (closed form in the offset, golden section in the yaw,
 	 *  within 0.5 rad of the mean normal), its texture their weighted mean and its extent from
-	 *  the first to the last contact along it. Needs count() >= 1. */
-	Wall fit(double thickness) const;
+	 *  the first to the last contact along it. Needs count() >= 1. With an `axis` (radians;
+	 *  ModelParams::wallAxis, Manhattan walls) the yaw is the direction along the axis or at
+	 *  right angles to it nearest that optimum, and the offset the closed form at it. */
+	Wall fit(double thickness, std::optional<double> axis = std::nullopt) const;
 
 	uint32_t count() const { return m_count; }
 	bool empty() const { return m_count == 0; }

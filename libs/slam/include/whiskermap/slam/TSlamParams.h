@@ -20,6 +20,11 @@ struct TSlamParams
 	/** Sweeps every particle's map anneals together (its insertOpts batch_sweeps, overridden
 	 *  for the particles; 0: the map config's own). */
 	unsigned batch_sweeps = 0;
+	/** Every particle's map holds walls, each along wall_axis or at right angles to it
+	 *  (model::ModelParams::manhattan_walls; overrides the map config's walls, manhattan_walls
+	 *  and wall_axis_deg); off: the map config's own. */
+	bool manhattan_walls = false;
+	double wall_axis = 0;  ///< radians (key wall_axis_deg, degrees in [-90, 90])
 	double resample_ess = 0.5;  ///< resample when the normalised effective sample size drops below this
 	mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling =
 		mrpt::bayes::CParticleFilter::prSystematic;
