@@ -73,9 +73,9 @@ std::string fingerprint(const CHierarchicalObjectMap& m)
 	return o.str();
 }
 
-/** Version 14's tail, the stream's last bytes before MRPT's end flag: manhattan_walls (a bool)
- *  and wall_axis (a double). */
-constexpr long MANHATTAN_BYTES = 1 + 8;
+/** Version 14's tail, the stream's last bytes before MRPT's end flag: manhattan_walls (a bool),
+ *  wall_axis, wall_extension and wall_extension_min_length (doubles). */
+constexpr long MANHATTAN_BYTES = 1 + 8 + 8 + 8;
 
 /** The byte of a map stream that holds its version (after MRPT's class name). */
 const size_t VERSION_BYTE = 1 + std::string("whiskermap::maps::CHierarchicalObjectMap").size();
@@ -469,17 +469,22 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheChainsPoseSpreads)
 	}
 }
 
-// Version 14 stores Manhattan walls (model keys manhattan_walls, wall_axis_deg); a version 13
-// stream (the same bytes without them) loads with walls at any yaw, and an axis outside
-// [-pi/2, pi/2] is refused.
+// Version 14 stores Manhattan walls (model keys manhattan_walls, wall_axis_deg) and the
+// likelihood's wall extension; a version 13 stream (the same bytes without them) loads with
+// walls at any yaw, as mapped in the likelihood, and an axis outside [-pi/2, pi/2] or an
+// extension outside [0, 100] m is refused.
 TEST(CHierarchicalObjectMap, SerializationKeepsManhattanWalls)
 {
 	CHierarchicalObjectMap a;
 	a.modelParams.walls = a.modelParams.manhattan_walls = true;
 	a.modelParams.wall_axis = 0.3;
+	a.likelihoodOptions.wall_extension = 0.25;
+	a.likelihoodOptions.wall_extension_min_length = 0.4;
 	const auto b = reloaded(a);
 	ASSERT_TRUE(b);
 	EXPECT_EQ(b->modelParams, a.modelParams);
+	EXPECT_EQ(b->likelihoodOptions.wall_extension, 0.25);
+	EXPECT_EQ(b->likelihoodOptions.wall_extension_min_length, 0.4);
 	const std::vector<uint8_t> bytes = bytesOf(a);
 	ASSERT_EQ(bytes[VERSION_BYTE], 14);
 	std::vector<uint8_t> old = bytes;
@@ -489,11 +494,43 @@ TEST(CHierarchicalObjectMap, SerializationKeepsManhattanWalls)
 	ASSERT_TRUE(c);
 	EXPECT_FALSE(c->modelParams.manhattan_walls);
 	EXPECT_FALSE(c->modelParams.wallAxis());
-	for (const double corrupt : {std::nan(""), 2.0, -1.6})
+	EXPECT_EQ(c->likelihoodOptions.wall_extension, 0);
+	for (const long at : {8 + 8 + 8, 8 + 8, 8})  // the axis, the extension, its minimum length
+		for (const double corrupt : {std::nan(""), 2e3, -1.6})
+		{
+			std::vector<uint8_t> bad = bytes;
+			std::memcpy(bad.data() + bad.size() - 1 - at, &corrupt, sizeof corrupt);
+			EXPECT_ANY_THROW(fromBytes(bad)) << corrupt << " at " << at;
+		}
+}
+
+// MRPT reads a field the stream's end cuts short without throwing: every cut of a map's stream
+// is refused with an exception, never by running out of memory (a count read from a partial
+// field can be huge).
+TEST(CHierarchicalObjectMap, EveryTruncatedStreamIsRefused)
+{
+	const auto rawlog = obs::RawlogReader::read(SRC + "/datasets/paper_arena/default.rawlog");
+	CHierarchicalObjectMap a;
+	for (size_t i = 0; a.lastingMap().state().tableCount() == 0; i++)  // a few legs, a table, contacts
+		a.insertObservation(*rawlog.sweeps.at(i).obs, mrpt::poses::CPose3D(rawlog.sweeps.at(i).robotPose));
+	const std::vector<uint8_t> bytes = bytesOf(a);
+	for (size_t cut = 0; cut < bytes.size(); cut++)
 	{
-		std::vector<uint8_t> bad = bytes;
-		std::memcpy(bad.data() + bad.size() - 1 - 8, &corrupt, sizeof corrupt);
-		EXPECT_ANY_THROW(fromBytes(bad)) << corrupt;
+		bool refused = false;
+		try
+		{
+			fromBytes({bytes.begin(), bytes.begin() + static_cast<long>(cut)});
+		}
+		catch (const std::bad_alloc&)
+		{
+			ADD_FAILURE() << "out of memory at a cut after " << cut << " of " << bytes.size() << " bytes";
+			refused = true;
+		}
+		catch (const std::exception&)
+		{
+			refused = true;
+		}
+		EXPECT_TRUE(refused) << "a cut after " << cut << " of " << bytes.size() << " bytes read as a map";
 	}
 }
 

@@ -123,13 +123,13 @@ TEST(SweptGridMap, VersionFourStreamsLoadWithoutTheGrid)
 	// size_moves and four size offsets per lasting table; version 9's sensor noise (three
 	// doubles); version 12's batch (batch_sweeps, sweeps pending, first pending insertion
 	// number: 16 bytes); version 13's chain pose spreads (three doubles per lasting table);
-	// version 14's Manhattan walls (a bool and a double); then MRPT's end flag
+	// version 14's Manhattan walls (a bool and three doubles); then MRPT's end flag
 	size_t moveTypes = 4;
 	for (const auto& t : a.moveTypes()) moveTypes += 1 + t.name.size() + 8 + 8;
 	ASSERT_GT(a.moveTypes().size(), 5u);
 	const size_t sizes = 1 + 32 * a.lastingMap().state().tableCount();
 	const size_t tail = 8 + 1 + 8 + 8 + 8 + 8 + 4 + 12 * a.sweptGrid().cells().size() + 8 + 4 + 8 + moveTypes + sizes + 24 + 16 +
-						24 * a.lastingMap().state().tableCount() + 9;
+						24 * a.lastingMap().state().tableCount() + 25;
 	bytes.erase(bytes.end() - 1 - static_cast<long>(tail), bytes.end() - 1);
 	const auto old = read(bytes);
 	ASSERT_TRUE(old);
@@ -197,7 +197,7 @@ TEST(SweptGridMap, MoveTypeCountsAddUpAndAreReadStrictly)
 	size_t section = 4;
 	for (const auto& t : a.moveTypes()) section += 1 + t.name.size() + 8 + 8;
 	const std::vector<uint8_t> good = bytesOf(a);
-	const size_t sizes = 1 + 56 * a.lastingMap().state().tableCount() + 24 + 16 + 9;  // versions 8, 9, 12, 13 and 14, after it
+	const size_t sizes = 1 + 56 * a.lastingMap().state().tableCount() + 24 + 16 + 25;  // versions 8, 9, 12, 13 and 14, after it
 	const size_t at = good.size() - 1 - sizes - section;  // the section's type count
 	std::vector<uint8_t> bad = good;
 	bad[at] = 65, bad[at + 1] = bad[at + 2] = bad[at + 3] = 0;  // little-endian 65
@@ -245,8 +245,8 @@ TEST(SweptGridMap, TableSizesRoundTripAndAreReadStrictly)
 	const double nan = std::nan("");
 	// The last table's reported width offset; after it version 9's sensor noise (24 bytes),
 	// version 11's spreads of the one class (16), version 12's batch (16), version 13's chain
-	// spreads (24 a table), version 14's Manhattan walls (9) and MRPT's end flag.
-	std::memcpy(&bad[bad.size() - 1 - 9 - 24 * s.tableCount() - 16 - 16 - 24 - 8], &nan, 8);
+	// spreads (24 a table), version 14's Manhattan walls (25) and MRPT's end flag.
+	std::memcpy(&bad[bad.size() - 1 - 25 - 24 * s.tableCount() - 16 - 16 - 24 - 8], &nan, 8);
 	EXPECT_THROW(read(bad), std::exception);
 }
 
@@ -280,7 +280,11 @@ TEST(SweptGridMap, SensorNoiseRoundTripsAndThePoseSpreadsWithIt)
 	for (const double v : {-0.01, std::nan(""), 1e9})
 	{
 		std::vector<uint8_t> bad = good;
-		std::memcpy(&bad[bad.size() - 1 - 24], &v, 8);  // sigma_r
+		// sigma_r, the first of version 9's three doubles; after them version 11's spreads (no
+		// class here), version 12's batch (16 bytes), version 13's chain spreads (24 a table),
+		// version 14's Manhattan walls (25) and MRPT's end flag.
+		ASSERT_TRUE(a.modelParams.classes.empty());
+		std::memcpy(&bad[bad.size() - 1 - 25 - 24 * a.lastingMap().state().tableCount() - 16 - 24], &v, 8);
 		EXPECT_THROW(read(bad), std::exception) << v;
 	}
 }

@@ -181,10 +181,10 @@ TEST(WallMap, VersionNineStreamsLoadTheWallsWithoutEndCapCosts)
 	const std::vector<uint8_t> current = bytes;
 	bytes[1 + name.size()] = 9;
 	// version 11's tail (two spreads per class), version 12's (the batch: 16 bytes), version
-	// 13's (three doubles per lasting table) and version 14's (Manhattan walls: a bool and a
-	// double), before MRPT's end flag, go first
+	// 13's (three doubles per lasting table) and version 14's (Manhattan walls: a bool and
+	// three doubles), before MRPT's end flag, go first
 	const long spreads = 16 * static_cast<long>(a.modelParams.classes.size()), batch = 16,
-			   chain = 24 * static_cast<long>(a.lastingMap().state().tableCount()) + 9;
+			   chain = 24 * static_cast<long>(a.lastingMap().state().tableCount()) + 25;
 	bytes.erase(bytes.end() - 1 - spreads - batch - chain, bytes.end() - 1);
 	bool first = true;
 	for (const auto& w : walls)

@@ -54,6 +54,9 @@ TEST(TSlamParams, ShippedConfigLoads)
 	EXPECT_DOUBLE_EQ(p.motion.translation_noise, 0.05);  // the default odometry preset
 	EXPECT_EQ(p.resampling, mrpt::bayes::CParticleFilter::prSystematic);
 	EXPECT_EQ(p.proposal_samples, 10u);
+	EXPECT_TRUE(p.manhattan_walls);  // walls along the start frame's axes, lengthened 0.3 m in the likelihood
+	EXPECT_EQ(p.wall_axis, 0);
+	EXPECT_EQ(p.wall_extension, 0.3);
 }
 
 TEST_F(TSlamParamsTest, StrictKeysAndValues)
@@ -73,6 +76,9 @@ TEST_F(TSlamParamsTest, StrictKeysAndValues)
 	EXPECT_FALSE(slam::TSlamParams::load(ini("[slam]\n")).manhattan_walls);
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nwall_axis_deg = 120\n")), core::Error);
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nmanhattan_walls = maybe\n")), core::Error);
+	EXPECT_EQ(slam::TSlamParams::load(ini("[slam]\nwall_extension = 0.5\n")).wall_extension, 0.5);
+	EXPECT_EQ(slam::TSlamParams::load(ini("[slam]\n")).wall_extension, 0);
+	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nwall_extension = -0.1\n")), core::Error);
 	EXPECT_THROW(slam::TSlamParams::load(path("missing.ini")), core::Error);
 	// Exact odometry needs no [motion_model] (its matched model has zero noise); a noisy file
 	// without one is refused.

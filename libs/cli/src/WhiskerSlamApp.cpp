@@ -47,7 +47,7 @@ std::string truthBeside(const std::string& rawlog)
 }
 
 /** Every particle's map: no history kept (the outputs come from a rebuild), and the sweeps
- *  annealed together and the Manhattan walls that the SLAM config asks for. */
+ *  annealed together, the Manhattan walls and the walls' extension that the SLAM config asks for. */
 void particleMaps(mrpt::maps::TSetOfMetricMapInitializers& inits, const slam::TSlamParams& params)
 {
 	for (auto& def : inits)
@@ -55,6 +55,7 @@ void particleMaps(mrpt::maps::TSetOfMetricMapInitializers& inits, const slam::TS
 		{
 			ours->insertionOptions.keep_history = false;
 			if (params.batch_sweeps > 0) ours->insertionOptions.lasting.batch_sweeps = params.batch_sweeps;
+			if (params.wall_extension > 0) ours->likelihoodOptions.wall_extension = params.wall_extension;
 			if (!params.manhattan_walls) continue;
 			ours->modelParams.walls = ours->modelParams.manhattan_walls = true;
 			ours->modelParams.wall_axis = params.wall_axis;

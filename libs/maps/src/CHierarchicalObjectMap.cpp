@@ -145,7 +145,9 @@ const std::vector<world::Obstacle>& CHierarchicalObjectMap::mappedSolids() const
 	// Cached: a particle filter scores every particle against the same map.
 	auto& c = m_legCache;
 	const std::lock_guard<std::mutex> lock(c.mutex);
-	if (!c.valid || c.support != likelihoodOptions.min_support || c.existence != likelihoodOptions.min_existence)
+	const auto& o = likelihoodOptions;
+	if (!c.valid || c.support != o.min_support || c.existence != o.min_existence || c.extension != o.wall_extension ||
+		c.extensionMin != o.wall_extension_min_length)
 	{
 		c.legs.clear();
 		const auto tables = mapTables();
@@ -154,13 +156,16 @@ const std::vector<world::Obstacle>& CHierarchicalObjectMap::mappedSolids() const
 		for (const auto& s : mapWalls())
 		{
 			const auto& w = s.wall;
+			const double grow = w.length() >= o.wall_extension_min_length ? o.wall_extension : 0;
 			c.legs.push_back(world::Obstacle::rectangle(
-				{(w.x0 + w.x1) / 2, (w.y0 + w.y1) / 2}, std::atan2(w.y1 - w.y0, w.x1 - w.x0), w.length() / 2,
+				{(w.x0 + w.x1) / 2, (w.y0 + w.y1) / 2}, std::atan2(w.y1 - w.y0, w.x1 - w.x0), w.length() / 2 + grow,
 				w.thickness / 2, w.texture));
 		}
 		c.valid = true;
-		c.support = likelihoodOptions.min_support;
-		c.existence = likelihoodOptions.min_existence;
+		c.support = o.min_support;
+		c.existence = o.min_existence;
+		c.extension = o.wall_extension;
+		c.extensionMin = o.wall_extension_min_length;
 	}
 	return c.legs;
 }

@@ -97,6 +97,8 @@ void CHierarchicalObjectMap::TLikelihoodOptions::loadFromConfigFile(
 		sweep.p_unexplored = sec.number("p_unexplored", sweep.p_unexplored, 1e-12, 1);
 		min_existence = sec.number("min_existence", min_existence, 0, 1);
 		min_support = static_cast<uint32_t>(sec.integer("min_support", min_support, 0, 1000000));
+		wall_extension = sec.number("wall_extension", wall_extension, 0, 100);
+		wall_extension_min_length = sec.number("wall_extension_min_length", wall_extension_min_length, 0, 100);
 	});
 }
 
@@ -106,7 +108,8 @@ void CHierarchicalObjectMap::TLikelihoodOptions::dumpToTextStream(std::ostream& 
 		<< "\np_unexplained=" << sweep.p_unexplained << "\np_miss=" << sweep.p_miss
 		<< "\nuse_swept_grid=" << sweep.use_swept_grid << "\ncell_prior=" << sweep.cell_prior
 		<< "\ncell_prior_sweeps=" << sweep.cell_prior_sweeps << "\np_unexplored=" << sweep.p_unexplored
-		<< "\nmin_existence=" << min_existence << "\nmin_support=" << min_support << "\n";
+		<< "\nmin_existence=" << min_existence << "\nmin_support=" << min_support << "\nwall_extension=" << wall_extension
+		<< "\nwall_extension_min_length=" << wall_extension_min_length << "\n";
 }
 
 CHierarchicalObjectMap::TMapDefinition::TMapDefinition() = default;

@@ -8,7 +8,7 @@
 // insertion's sensor noise; versions before 10 without the walls' end-cap costs (0); versions
 // before 11 with every class's legs nominal; versions before 12 with every sweep annealed at
 // once; versions before 13 without the posterior chain's pose spreads (none); versions before
-// 14 without Manhattan walls.
+// 14 without Manhattan walls and with walls as mapped in the likelihood.
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/model/ObjectCatalogue.h>
@@ -42,11 +42,20 @@ void writeVec(CArchive& a, const std::vector<T>& v)
 	a.WriteAs<uint32_t>(v.size());
 	for (const auto& x : v) write(a, x);
 }
+/** Reads the `n` items a count announced, one by one: MRPT reads a field cut short by the
+ *  stream's end without throwing, so a truncated or corrupt count can be huge; growing item
+ *  by item, the stream's end (which throws) comes long before memory runs out. */
+template <class T, class F>
+void readEach(std::vector<T>& v, uint32_t n, F&& readOne)
+{
+	v.clear();
+	v.reserve(std::min<uint32_t>(n, 1024));
+	for (uint32_t i = 0; i < n; i++) readOne(v.emplace_back());
+}
 template <class T>
 void readVec(CArchive& a, std::vector<T>& v, uint8_t version)
 {
-	v.resize(a.ReadAs<uint32_t>());
-	for (auto& x : v) read(a, x, version);
+	readEach(v, a.ReadAs<uint32_t>(), [&](T& x) { read(a, x, version); });
 }
 
 /** The lasting state, ids renumbered densely in ascending order. */
@@ -102,21 +111,15 @@ struct LastingParts
 void readLasting(CArchive& in, LastingParts& parts, uint8_t version)
 {
 	auto& [tables, existence, reported, legs, evidence, contacts, seq] = parts;
-	tables.resize(in.ReadAs<uint32_t>());
-	existence.resize(tables.size());
-	for (size_t i = 0; i < tables.size(); i++)
-	{
-		auto& t = tables[i];
-		in >> t.x >> t.y >> t.theta >> t.leg_width >> t.texture >> existence[i];
-		if (version < 3) continue;
+	existence.clear();
+	readEach(tables, in.ReadAs<uint32_t>(), [&](model::Table& t) {
+		in >> t.x >> t.y >> t.theta >> t.leg_width >> t.texture >> existence.emplace_back();
+		if (version < 3) return;
 		reported.push_back(t);
 		in >> reported.back().x >> reported.back().y >> reported.back().theta;
-	}
-	legs.resize(in.ReadAs<uint32_t>());
-	evidence.resize(legs.size());
-	for (size_t i = 0; i < legs.size(); i++)
-	{
-		auto& g = legs[i];
+	});
+	evidence.clear();
+	readEach(legs, in.ReadAs<uint32_t>(), [&](model::Leg& g) {
 		int32_t parent;
 		in >> g.x >> g.y >> g.theta >> g.wx >> g.wy >> g.texture >> parent;
 		if (parent < -1 || parent >= static_cast<int32_t>(tables.size()))
@@ -127,18 +130,16 @@ void readLasting(CArchive& in, LastingParts& parts, uint8_t version)
 		for (size_t k = 0; k < known; k++) in >> stats[k];
 		uint32_t count;
 		in >> count;
-		evidence[i] = model::LegEvidence::fromStats(stats, count, known);
-	}
-	contacts.resize(in.ReadAs<uint32_t>());
-	for (auto& k : contacts)
-	{
+		evidence.push_back(model::LegEvidence::fromStats(stats, count, known));
+	});
+	readEach(contacts, in.ReadAs<uint32_t>(), [&](model::LastingState::Contact& k) {
 		read(in, k.shapelet, version);
 		int32_t leg;
 		in >> leg >> k.seq;
 		if (leg < -1 || leg >= static_cast<int32_t>(legs.size()))
 			THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (contact leg out of range)");
 		k.leg = leg;
-	}
+	});
 	in >> seq;
 }
 
@@ -198,9 +199,7 @@ void readWalls(CArchive& in, model::ModelParams& m, std::vector<model::LastingSt
 	in >> m.walls >> m.c_W >> m.wall_length_scale >> m.wall_thickness;
 	const auto n = in.ReadAs<uint32_t>();
 	if (n > (1u << 24)) THROW_EXCEPTION("CHierarchicalObjectMap: corrupt stream (too many walls)");
-	walls.resize(n);
-	for (auto& w : walls)
-	{
+	readEach(walls, n, [&](model::LastingState::StoredWall& w) {
 		in >> w.wall.x0 >> w.wall.y0 >> w.wall.x1 >> w.wall.y1 >> w.wall.thickness >> w.wall.texture >> w.existence;
 		std::array<double, model::WallEvidence::STATS> v{};
 		const size_t known = version >= 10 ? v.size() : model::WallEvidence::STATS_BEFORE_CAPS;
@@ -208,15 +207,16 @@ void readWalls(CArchive& in, model::ModelParams& m, std::vector<model::LastingSt
 		if (!std::isfinite(v.back()) || v.back() < 0)
 			THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (wall end-cap cost not a number >= 0)");
 		w.evidence = model::WallEvidence::fromStats(v, in.ReadAs<uint32_t>());
-	}
+	});
 }
 
 /** Version 3: the catalogue and the class of each lasting table (older streams: class 0). */
 void readClasses(CArchive& in, model::ModelParams& m, LastingParts& parts)
 {
-	m.classes.resize(in.ReadAs<uint32_t>());
-	if (m.classes.size() > model::ObjectCatalogue::MAX_CLASSES)
+	const auto n = in.ReadAs<uint32_t>();
+	if (n > model::ObjectCatalogue::MAX_CLASSES)
 		THROW_EXCEPTION("CHierarchicalObjectMap: corrupt stream (too many object classes)");
+	m.classes.resize(n);
 	for (auto& c : m.classes) in >> c.name >> c.label >> c.length >> c.width >> c.leg_width >> c.texture >> c.size_sigma >> c.prior;
 	for (auto& t : parts.tables)
 	{
@@ -384,8 +384,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	out << l.batch_sweeps << m_lasting.pendingSweeps() << m_lasting.pendingFrom();
 	// Version 13: the lasting tables' pose spreads from the posterior chain (-1: none).
 	writeChainSpreads(out, m_lasting.state());
-	// Version 14: Manhattan walls.
-	out << m.manhattan_walls << m.wall_axis;
+	// Version 14: Manhattan walls, and the likelihood's wall extension.
+	out << m.manhattan_walls << m.wall_axis << likelihoodOptions.wall_extension << likelihoodOptions.wall_extension_min_length;
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -416,24 +416,23 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 				m.leg_width >> m.texture >> m.parent_gate;
 			auto& c = insertionOptions.consolidation;
 			insertionOptions.memory_size = in.ReadAs<uint32_t>();
+			if (insertionOptions.memory_size < 1 || insertionOptions.memory_size > 1000)
+				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt options (memory_size not in [1, 1000])");
 			in >> insertionOptions.seed >> insertionOptions.use_sensor_noise >> insertionOptions.keep_history >>
 				c.merge_distance >> c.merge_angle >> c.evidence_margin;
 			in >> likelihoodOptions.sweep.sigma_contact >> likelihoodOptions.sweep.sigma_normal >>
 				likelihoodOptions.sweep.p_unexplained >> likelihoodOptions.sweep.p_miss >> likelihoodOptions.min_support >>
 				renderOptions.table_height >> renderOptions.top_thickness >> renderOptions.octomap_resolution;
 			in >> m_steps;
-			m_poses.resize(in.ReadAs<uint32_t>());
-			for (auto& p : m_poses)
-			{
+			readEach(m_poses, in.ReadAs<uint32_t>(), [&](TPoseRecord& p) {
 				in >> p.pose >> p.logPosterior >> p.shapelets;
 				readVec(in, p.tables, version);
-			}
-			std::vector<TMapObject> objs(in.ReadAs<uint32_t>());
-			for (auto& o : objs)
-			{
+			});
+			std::vector<TMapObject> objs;
+			readEach(objs, in.ReadAs<uint32_t>(), [&](TMapObject& o) {
 				read(in, o.table, version);
 				in >> o.support >> o.evidence >> o.sum_x >> o.sum_y >> o.sum_cos2 >> o.sum_sin2;
-			}
+			});
 			readVec(in, m_shapelets, version);
 			std::vector<obs::Shapelet> memory;
 			readVec(in, memory, version);
@@ -513,12 +512,17 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 				m_lasting.setPending(pendingSweeps, pendingFrom);
 				if (version >= 13) readChainSpreads(in, m_lasting.state());
 			}
-			m.manhattan_walls = false;  // versions before 14: walls at any yaw
+			m.manhattan_walls = false;  // versions before 14: walls at any yaw, as mapped in the likelihood
+			likelihoodOptions.wall_extension = 0;
 			if (version >= 14)
 			{
-				in >> m.manhattan_walls >> m.wall_axis;
+				auto& lo = likelihoodOptions;
+				in >> m.manhattan_walls >> m.wall_axis >> lo.wall_extension >> lo.wall_extension_min_length;
 				if (!(std::abs(m.wall_axis) <= M_PI_2))
 					THROW_EXCEPTION("CHierarchicalObjectMap: corrupt model (wall_axis not a number in [-pi/2, pi/2])");
+				if (!(lo.wall_extension >= 0 && lo.wall_extension <= 100 && lo.wall_extension_min_length >= 0 &&
+					  lo.wall_extension_min_length <= 100))
+					THROW_EXCEPTION("CHierarchicalObjectMap: corrupt likelihood options (a wall extension not in [0, 100] m)");
 			}
 			if (!(m.sigma_corner > 0) || !std::isfinite(m.sigma_corner))
 				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt model (sigma_corner not a positive number)");

@@ -77,6 +77,11 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 		 *  likely there than not). */
 		double min_existence = 0.5;
 		uint32_t min_support = 3;  ///< per-pose mode: objects supported by fewer poses are ignored
+		/** Metres each mapped wall at least wall_extension_min_length long is lengthened by at
+		 *  both ends in the likelihood (a wall is straight: a contact a little past its last
+		 *  one is predicted on its line, not unexplained); 0: walls as mapped. */
+		double wall_extension = 0;
+		double wall_extension_min_length = 0.2;  ///< metres: shorter walls (a leg's face) keep their length
 		void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
 		void dumpToTextStream(std::ostream& out) const override;
 	};
@@ -210,6 +215,7 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 		bool valid = false;
 		uint32_t support = 0;  ///< the thresholds the legs were selected with
 		double existence = -1;
+		double extension = -1, extensionMin = -1;  ///< and the walls lengthened with
 		std::mutex mutex;
 		LegCache() = default;
 		LegCache(const LegCache&) {}

@@ -25,6 +25,9 @@ struct TSlamParams
 	 *  and wall_axis_deg); off: the map config's own. */
 	bool manhattan_walls = false;
 	double wall_axis = 0;  ///< radians (key wall_axis_deg, degrees in [-90, 90])
+	/** Every particle's likelihood lengthens its mapped walls by this much at each end (the
+	 *  map's likelihoodOpts wall_extension, overridden for the particles; 0: the map config's own). */
+	double wall_extension = 0;
 	double resample_ess = 0.5;  ///< resample when the normalised effective sample size drops below this
 	mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling =
 		mrpt::bayes::CParticleFilter::prSystematic;
