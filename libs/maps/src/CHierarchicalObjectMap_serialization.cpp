@@ -110,7 +110,14 @@ struct LastingParts
 
 void readLasting(CArchive& in, LastingParts& parts, uint8_t version)
 {
-	auto& [tables, existence, reported, legs, evidence, contacts, seq] = parts;
+	// Plain references, not structured bindings: the lambdas below capture them (C++17).
+	auto& tables = parts.tables;
+	auto& reported = parts.reported;
+	auto& legs = parts.legs;
+	auto& existence = parts.existence;
+	auto& evidence = parts.evidence;
+	auto& contacts = parts.contacts;
+	auto& seq = parts.seq;
 	existence.clear();
 	readEach(tables, in.ReadAs<uint32_t>(), [&](model::Table& t) {
 		in >> t.x >> t.y >> t.theta >> t.leg_width >> t.texture >> existence.emplace_back();
