@@ -110,26 +110,18 @@ struct LastingParts
 
 void readLasting(CArchive& in, LastingParts& parts, uint8_t version)
 {
-	// Plain references, not structured bindings: the lambdas below capture them (C++17).
-	auto& tables = parts.tables;
-	auto& reported = parts.reported;
-	auto& legs = parts.legs;
-	auto& existence = parts.existence;
-	auto& evidence = parts.evidence;
-	auto& contacts = parts.contacts;
-	auto& seq = parts.seq;
-	existence.clear();
-	readEach(tables, in.ReadAs<uint32_t>(), [&](model::Table& t) {
-		in >> t.x >> t.y >> t.theta >> t.leg_width >> t.texture >> existence.emplace_back();
+	parts.existence.clear();
+	readEach(parts.tables, in.ReadAs<uint32_t>(), [&](model::Table& t) {
+		in >> t.x >> t.y >> t.theta >> t.leg_width >> t.texture >> parts.existence.emplace_back();
 		if (version < 3) return;
-		reported.push_back(t);
-		in >> reported.back().x >> reported.back().y >> reported.back().theta;
+		auto& r = parts.reported.emplace_back(t);
+		in >> r.x >> r.y >> r.theta;
 	});
-	evidence.clear();
-	readEach(legs, in.ReadAs<uint32_t>(), [&](model::Leg& g) {
+	parts.evidence.clear();
+	readEach(parts.legs, in.ReadAs<uint32_t>(), [&](model::Leg& g) {
 		int32_t parent;
 		in >> g.x >> g.y >> g.theta >> g.wx >> g.wy >> g.texture >> parent;
-		if (parent < -1 || parent >= static_cast<int32_t>(tables.size()))
+		if (parent < -1 || parent >= static_cast<int32_t>(parts.tables.size()))
 			THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (leg parent out of range)");
 		g.parent = parent;
 		std::array<double, model::LegEvidence::STATS> stats{};
@@ -137,17 +129,17 @@ void readLasting(CArchive& in, LastingParts& parts, uint8_t version)
 		for (size_t k = 0; k < known; k++) in >> stats[k];
 		uint32_t count;
 		in >> count;
-		evidence.push_back(model::LegEvidence::fromStats(stats, count, known));
+		parts.evidence.push_back(model::LegEvidence::fromStats(stats, count, known));
 	});
-	readEach(contacts, in.ReadAs<uint32_t>(), [&](model::LastingState::Contact& k) {
+	readEach(parts.contacts, in.ReadAs<uint32_t>(), [&](model::LastingState::Contact& k) {
 		read(in, k.shapelet, version);
 		int32_t leg;
 		in >> leg >> k.seq;
-		if (leg < -1 || leg >= static_cast<int32_t>(legs.size()))
+		if (leg < -1 || leg >= static_cast<int32_t>(parts.legs.size()))
 			THROW_EXCEPTION("CHierarchicalObjectMap: corrupt lasting state (contact leg out of range)");
 		k.leg = leg;
 	});
-	in >> seq;
+	in >> parts.seq;
 }
 
 void writeClasses(CArchive& out, const model::ModelParams& m, const model::LastingState& s)
