@@ -90,11 +90,9 @@ double WallEvidence::logLikelihood(const Wall& w, const ModelParams& p) const
 	return m_count * std::log(p.alpha_S) - cost(d, normalAt(d), c, w.thickness) - tex - m_capCost;  // eq. 22, summed
 }
 
-Wall WallEvidence::fit(double thickness, std::optional<double> axis) const
+double WallEvidence::freeYaw(double lo, double hi, double thickness) const
 {
-	// Golden section over the yaw offset about the mean normal error; the offset in closed form.
-	const double mean = m_wa > 0 ? m_sa / m_wa : 0;
-	double lo = mean - 0.5, hi = mean + 0.5;
+	// Golden section over the yaw offset; the offset in closed form.
 	const double g = (std::sqrt(5.0) - 1) / 2;
 	const auto f = [&](double d) {
 		const Normal n = normalAt(d);
@@ -106,9 +104,24 @@ Wall WallEvidence::fit(double thickness, std::optional<double> axis) const
 		if (fa < fb) hi = b, b = a, fb = fa, a = hi - g * (hi - lo), fa = f(a);
 		else lo = a, a = b, fa = fb, b = lo + g * (hi - lo), fb = f(b);
 	}
-	double d = (lo + hi) / 2;
-	if (axis)  // the face normal m_phi + d held to axis + k pi/2, the nearest k
-		d = *axis + std::round((m_phi + d - *axis) / M_PI_2) * M_PI_2 - m_phi;
+	return (lo + hi) / 2;
+}
+
+Wall WallEvidence::fit(double thickness, std::optional<double> axis) const
+{
+	// The free optimum lies within 0.5 rad of the mean normal error.
+	const double mean = m_wa > 0 ? m_sa / m_wa : 0, lo = mean - 0.5, hi = mean + 0.5;
+	double d = 0;
+	if (axis)  // the face normal m_phi + d held to axis + k pi/2, the k nearest the free optimum
+	{
+		const auto nearest = [&](double v) { return std::round((m_phi + v - *axis) / M_PI_2); };
+		// k is monotone in d: when both ends of the search's interval give the same k, so does
+		// the optimum, which is then not searched for.
+		const double k = nearest(lo) == nearest(hi) ? nearest(lo) : nearest(freeYaw(lo, hi, thickness));
+		d = *axis + k * M_PI_2 - m_phi;
+	}
+	else
+		d = freeYaw(lo, hi, thickness);
 	const Normal n = normalAt(d);
 	const double c = bestOffset(n, thickness), nx = n.x, ny = n.y, ux = ny, uy = -nx;
 	const double cx = m_ax + c * nx, cy = m_ay + c * ny;  // a point of the centre line

@@ -34,7 +34,8 @@ class WallEvidence
 	 *  within 0.5 rad of the mean normal), its texture their weighted mean and its extent from
 	 *  the first to the last contact along it. Needs count() >= 1. With an `axis` (radians;
 	 *  ModelParams::wallAxis, Manhattan walls) the yaw is the direction along the axis or at
-	 *  right angles to it nearest that optimum, and the offset the closed form at it. */
+	 *  right angles to it nearest that optimum (searched for only when the search's window
+	 *  reaches past halfway between two such directions), and the offset the closed form at it. */
 	Wall fit(double thickness, std::optional<double> axis = std::nullopt) const;
 
 	uint32_t count() const { return m_count; }
@@ -59,6 +60,8 @@ class WallEvidence
 		double x, y;
 	};
 	Normal normalAt(double d) const;
+	/** The yaw offset in [lo, hi] minimising cost() at its best offset (golden section). */
+	double freeYaw(double lo, double hi, double thickness) const;
 	/** Position cost (sum across^2 / sigma_r^2) and angle cost of the folded contacts for a wall
 	 *  whose face +1 (reference side) has normal n = normalAt(d) and whose centre line passes
 	 *  at offset c from the anchor along that normal. */
