@@ -54,31 +54,37 @@ std::optional<WhiskerContact> WhiskerContact::first(
 	};
 	double bestU = INFINITY;
 	std::optional<WhiskerContact> best;
-	auto consider = [&](const Eigen::Vector2d& p, double range, double normalAngle, int index) {
-		const double a = std::atan2(p.y() - pivot.y(), p.x() - pivot.x());
+	// Whether the touch at p, at bearing `a` from the pivot, comes first so far: then it is
+	// kept, and the caller sets its normal (worked out only for such touches).
+	auto earliest = [&](const Eigen::Vector2d& p, double a, double range, int index) {
 		const double u = progress(a);
-		if (u > span || u >= bestU) return;
+		if (u > span || u >= bestU) return false;
 		bestU = u;
-		best = WhiskerContact{a0 + sgn * u, range, p, normalAngle, index};
+		best = WhiskerContact{a0 + sgn * u, range, p, 0, index};
+		return true;
 	};
 
 	for (size_t i = 0; i < obstacles.size(); i++)
 	{
 		const auto& o = obstacles[i];
+		const Eigen::Vector2d normals[4] = {o.edgeNormal(0), o.edgeNormal(1), o.edgeNormal(2), o.edgeNormal(3)};
 		for (int k = 0; k < 4; k++)
 		{
 			const Eigen::Vector2d a = o.corners[k], e = o.corners[(k + 1) % 4] - a;
-			const Eigen::Vector2d n = o.edgeNormal(k);
+			const Eigen::Vector2d& n = normals[k];
 			// (1) a corner sweeps onto the shaft. The face reported is the adjacent face
 			// that most opposes the shaft's motion (the one it presses against).
 			const double r = (a - pivot).norm();
 			if (r > 0 && r <= length)
 			{
 				const double ac = std::atan2(a.y() - pivot.y(), a.x() - pivot.x());
-				const Eigen::Vector2d motion = sgn * Eigen::Vector2d(-std::sin(ac), std::cos(ac));
-				const Eigen::Vector2d nPrev = o.edgeNormal((k + 3) % 4);
-				const Eigen::Vector2d nf = n.dot(motion) < nPrev.dot(motion) ? n : nPrev;
-				consider(a, r, std::atan2(nf.y(), nf.x()), static_cast<int>(i));
+				if (earliest(a, ac, r, static_cast<int>(i)))
+				{
+					const Eigen::Vector2d motion = sgn * Eigen::Vector2d(-std::sin(ac), std::cos(ac));
+					const Eigen::Vector2d& nPrev = normals[(k + 3) % 4];
+					const Eigen::Vector2d& nf = n.dot(motion) < nPrev.dot(motion) ? n : nPrev;
+					best->normal = std::atan2(nf.y(), nf.x());
+				}
 			}
 			// (2) the tip (circle of radius `length`) meets the edge.
 			const Eigen::Vector2d f = a - pivot;
@@ -89,7 +95,9 @@ std::optional<WhiskerContact> WhiskerContact::first(
 			{
 				const double t = (-B + sign * std::sqrt(disc)) / (2 * A);
 				if (t < 0 || t > 1) continue;
-				consider(a + t * e, length, std::atan2(n.y(), n.x()), static_cast<int>(i));
+				const Eigen::Vector2d q = a + t * e;
+				if (earliest(q, std::atan2(q.y() - pivot.y(), q.x() - pivot.x()), length, static_cast<int>(i)))
+					best->normal = std::atan2(n.y(), n.x());
 			}
 		}
 	}
