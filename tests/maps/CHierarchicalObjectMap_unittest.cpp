@@ -21,8 +21,11 @@
 #include <set>
 #include <sstream>
 
+#include "StreamTail.h"
+
 using namespace whiskermap;
 using maps::CHierarchicalObjectMap;
+using namespace maps::test;
 
 namespace
 {
@@ -73,9 +76,6 @@ std::string fingerprint(const CHierarchicalObjectMap& m)
 	return o.str();
 }
 
-/** Version 14's tail, the stream's last bytes before MRPT's end flag: manhattan_walls (a bool),
- *  wall_axis, wall_extension and wall_extension_min_length (doubles). */
-constexpr long MANHATTAN_BYTES = 1 + 8 + 8 + 8;
 
 /** The byte of a map stream that holds its version (after MRPT's class name). */
 const size_t VERSION_BYTE = 1 + std::string("whiskermap::maps::CHierarchicalObjectMap").size();
@@ -370,11 +370,11 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheLegSpreads)
 	ASSERT_TRUE(b);
 	EXPECT_EQ(b->modelParams, a.modelParams);
 	const std::vector<uint8_t> bytes = bytesOf(a);
-	ASSERT_EQ(bytes[VERSION_BYTE], 14);
+	ASSERT_EQ(bytes[VERSION_BYTE], STREAM_VERSION);
 	// The tail before version 12's batch (16 bytes), version 13's chain spreads (none: no
-	// table), version 14's and MRPT's end flag: two doubles per class, class 2's leg width
-	// spread first.
-	const long tail = 16 * static_cast<long>(a.modelParams.classes.size()), batch = 16 + MANHATTAN_BYTES;
+	// table), the later versions' and MRPT's end flag: two doubles per class, class 2's leg
+	// width spread first.
+	const long tail = 16 * static_cast<long>(a.modelParams.classes.size()), batch = 16 + AFTER_CHAIN_SPREADS;
 	std::vector<uint8_t> old = bytes;
 	old[VERSION_BYTE] = 10;
 	old.erase(old.end() - 1 - batch - tail, old.end() - 1);
@@ -408,9 +408,9 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheSweepsPending)
 	EXPECT_EQ(b->lastingMap().pendingFrom(), a.lastingMap().pendingFrom());
 	const std::vector<uint8_t> bytes = bytesOf(a);
 	ASSERT_TRUE(fromBytes(bytes));
-	// Before version 14's tail and MRPT's end flag (no table: no chain spreads): batch_sweeps
-	// (uint32), sweeps pending (uint32), first pending seq (uint64).
-	const size_t at = bytes.size() - 1 - MANHATTAN_BYTES - 16;
+	// Before the later versions' tails and MRPT's end flag (no table: no chain spreads):
+	// batch_sweeps (uint32), sweeps pending (uint32), first pending seq (uint64).
+	const size_t at = bytes.size() - 1 - AFTER_CHAIN_SPREADS - 16;
 	const auto corrupt = [&](size_t offset, auto value) {
 		std::vector<uint8_t> bad = bytes;
 		std::memcpy(bad.data() + at + offset, &value, sizeof value);
@@ -452,11 +452,11 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheChainsPoseSpreads)
 	EXPECT_EQ(known(b->lastingMap().state()), known(st));
 
 	const std::vector<uint8_t> bytes = bytesOf(a);
-	ASSERT_EQ(bytes[VERSION_BYTE], 14);
-	const long tail = 24 * static_cast<long>(st.tableCount());  // three doubles per table, before version 14's
+	ASSERT_EQ(bytes[VERSION_BYTE], STREAM_VERSION);
+	const long tail = 24 * static_cast<long>(st.tableCount());  // three doubles per table, before the later versions'
 	std::vector<uint8_t> old = bytes;
 	old[VERSION_BYTE] = 12;
-	old.erase(old.end() - 1 - MANHATTAN_BYTES - tail, old.end() - 1);
+	old.erase(old.end() - 1 - AFTER_CHAIN_SPREADS - tail, old.end() - 1);
 	const auto c = fromBytes(old);
 	ASSERT_TRUE(c);
 	EXPECT_EQ(c->lastingMap().state().tableCount(), st.tableCount());
@@ -464,7 +464,7 @@ TEST(CHierarchicalObjectMap, SerializationKeepsTheChainsPoseSpreads)
 	for (const double corrupt : {std::nan(""), -0.5, 2e3})
 	{
 		std::vector<uint8_t> bad = bytes;
-		std::memcpy(bad.data() + bad.size() - 1 - MANHATTAN_BYTES - tail, &corrupt, sizeof corrupt);
+		std::memcpy(bad.data() + bad.size() - 1 - AFTER_CHAIN_SPREADS - tail, &corrupt, sizeof corrupt);
 		EXPECT_ANY_THROW(fromBytes(bad)) << corrupt;
 	}
 }
@@ -486,10 +486,10 @@ TEST(CHierarchicalObjectMap, SerializationKeepsManhattanWalls)
 	EXPECT_EQ(b->likelihoodOptions.wall_extension, 0.25);
 	EXPECT_EQ(b->likelihoodOptions.wall_extension_min_length, 0.4);
 	const std::vector<uint8_t> bytes = bytesOf(a);
-	ASSERT_EQ(bytes[VERSION_BYTE], 14);
+	ASSERT_EQ(bytes[VERSION_BYTE], STREAM_VERSION);
 	std::vector<uint8_t> old = bytes;
 	old[VERSION_BYTE] = 13;
-	old.erase(old.end() - 1 - MANHATTAN_BYTES, old.end() - 1);
+	old.erase(old.end() - 1 - AFTER_CHAIN_SPREADS, old.end() - 1);
 	const auto c = fromBytes(old);
 	ASSERT_TRUE(c);
 	EXPECT_FALSE(c->modelParams.manhattan_walls);
@@ -499,7 +499,7 @@ TEST(CHierarchicalObjectMap, SerializationKeepsManhattanWalls)
 		for (const double corrupt : {std::nan(""), 2e3, -1.6})
 		{
 			std::vector<uint8_t> bad = bytes;
-			std::memcpy(bad.data() + bad.size() - 1 - at, &corrupt, sizeof corrupt);
+			std::memcpy(bad.data() + bad.size() - 1 - RECORD_SWEPT_BYTES - at, &corrupt, sizeof corrupt);
 			EXPECT_ANY_THROW(fromBytes(bad)) << corrupt << " at " << at;
 		}
 }

@@ -14,8 +14,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include "StreamTail.h"
+
 using namespace whiskermap;
 using maps::CHierarchicalObjectMap;
+using namespace maps::test;
 
 namespace
 {
@@ -112,7 +115,7 @@ TEST(SweptGridMap, VersionFourStreamsLoadWithoutTheGrid)
 	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
 	ASSERT_EQ(bytes[0], static_cast<uint8_t>(name.size() | 0x80));
 	ASSERT_EQ(std::string(bytes.begin() + 1, bytes.begin() + 1 + static_cast<long>(name.size())), name);
-	ASSERT_EQ(bytes[1 + name.size()], 14);
+	ASSERT_EQ(bytes[1 + name.size()], STREAM_VERSION);
 	ASSERT_TRUE(a.lastingMap().state().walls().empty());  // version 10 changes only the walls' records
 	ASSERT_TRUE(a.modelParams.classes.empty());  // version 11 adds 16 bytes per class: none here
 	bytes[1 + name.size()] = 4;
@@ -123,13 +126,13 @@ TEST(SweptGridMap, VersionFourStreamsLoadWithoutTheGrid)
 	// size_moves and four size offsets per lasting table; version 9's sensor noise (three
 	// doubles); version 12's batch (batch_sweeps, sweeps pending, first pending insertion
 	// number: 16 bytes); version 13's chain pose spreads (three doubles per lasting table);
-	// version 14's Manhattan walls (a bool and three doubles); then MRPT's end flag
+	// the later versions' tails (StreamTail.h); then MRPT's end flag
 	size_t moveTypes = 4;
 	for (const auto& t : a.moveTypes()) moveTypes += 1 + t.name.size() + 8 + 8;
 	ASSERT_GT(a.moveTypes().size(), 5u);
 	const size_t sizes = 1 + 32 * a.lastingMap().state().tableCount();
 	const size_t tail = 8 + 1 + 8 + 8 + 8 + 8 + 4 + 12 * a.sweptGrid().cells().size() + 8 + 4 + 8 + moveTypes + sizes + 24 + 16 +
-						24 * a.lastingMap().state().tableCount() + 25;
+						24 * a.lastingMap().state().tableCount() + AFTER_CHAIN_SPREADS;
 	bytes.erase(bytes.end() - 1 - static_cast<long>(tail), bytes.end() - 1);
 	const auto old = read(bytes);
 	ASSERT_TRUE(old);
@@ -142,6 +145,68 @@ TEST(SweptGridMap, VersionFourStreamsLoadWithoutTheGrid)
 		EXPECT_EQ(score(*old, 120, dx), score(legacy, 120, dx));
 		EXPECT_NE(score(a, 120, dx), score(legacy, 120, dx));  // the grid does change the score
 	}
+}
+
+// insertOpts record_swept = false (a particle filter's maps: whisker-slam): the grid stays
+// empty and nothing else changes; version 15 stores the key (older streams record); and the
+// key cannot be off while the likelihood (use_swept_grid) or the model (free_space) reads it.
+TEST(SweptGridMap, UnrecordedItStaysEmptyAndTheMapIsTheSame)
+{
+	CHierarchicalObjectMap a, b;
+	b.insertionOptions.record_swept = false;
+	insert(a, 0, 150);
+	insert(b, 0, 150);
+	EXPECT_FALSE(a.sweptGrid().empty());
+	EXPECT_TRUE(b.sweptGrid().empty());
+	const auto ta = a.mapTables(), tb = b.mapTables();
+	ASSERT_EQ(ta.size(), tb.size());
+	ASSERT_GT(ta.size(), 0u);
+	for (size_t k = 0; k < ta.size(); k++)
+	{
+		EXPECT_EQ(ta[k].x, tb[k].x);
+		EXPECT_EQ(ta[k].y, tb[k].y);
+		EXPECT_EQ(ta[k].yaw, tb[k].yaw);
+	}
+	for (const double dx : {0.0, 0.3}) EXPECT_EQ(score(a, 120, dx), score(b, 120, dx));
+
+	std::vector<uint8_t> bytes = bytesOf(b);
+	const auto back = read(bytes);
+	ASSERT_TRUE(back);
+	EXPECT_FALSE(back->insertionOptions.record_swept);
+	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
+	ASSERT_EQ(bytes[1 + name.size()], STREAM_VERSION);
+	bytes[1 + name.size()] = 14;
+	bytes.erase(bytes.end() - 1 - RECORD_SWEPT_BYTES, bytes.end() - 1);
+	const auto old = read(bytes);
+	ASSERT_TRUE(old);
+	EXPECT_TRUE(old->insertionOptions.record_swept);
+
+	std::ifstream in(SRC + "/config/whisker-map.ini");
+	const std::string shipped((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+	const std::string path = (std::filesystem::temp_directory_path() / "whiskermap_record_swept.ini").string();
+	// The shipped config with each (key line, its replacement) applied.
+	const auto load = [&](const std::vector<std::pair<std::string, std::string>>& edits) {
+		std::string text = shipped;
+		for (const auto& [from, to] : edits)
+		{
+			const size_t at = text.find(from);
+			EXPECT_NE(at, std::string::npos) << from;
+			text.replace(at, from.size(), to);
+		}
+		std::ofstream(path) << text;
+		return maps::MapConfig::load(path);
+	};
+	const std::string insertOpts = "[MetricMap_hierarchicalObjectMap_00_insertOpts]\n";
+	const std::string likelihoodOpts = "[MetricMap_hierarchicalObjectMap_00_likelihoodOpts]\n";
+	const std::pair<std::string, std::string> unrecorded{insertOpts, insertOpts + "record_swept = false\n"};
+	const auto m = mrpt::maps::CMultiMetricMap(load({unrecorded})).mapByClass<CHierarchicalObjectMap>();
+	ASSERT_TRUE(m);
+	EXPECT_FALSE(m->insertionOptions.record_swept);
+	EXPECT_THROW(load({{insertOpts, insertOpts + "record_swept = maybe\n"}}), core::Error);
+	EXPECT_THROW(load({unrecorded, {likelihoodOpts, likelihoodOpts + "use_swept_grid = true\n"}}), core::Error);
+	EXPECT_THROW(load({unrecorded, {"free_space = false", "free_space = true"}}), core::Error);
+	EXPECT_NO_THROW(load({{"free_space = false", "free_space = true"}}));
+	std::filesystem::remove(path);
 }
 
 TEST(SweptGridMap, OptionsAreReadStrictly)
@@ -197,7 +262,7 @@ TEST(SweptGridMap, MoveTypeCountsAddUpAndAreReadStrictly)
 	size_t section = 4;
 	for (const auto& t : a.moveTypes()) section += 1 + t.name.size() + 8 + 8;
 	const std::vector<uint8_t> good = bytesOf(a);
-	const size_t sizes = 1 + 56 * a.lastingMap().state().tableCount() + 24 + 16 + 25;  // versions 8, 9, 12, 13 and 14, after it
+	const size_t sizes = 1 + 56 * a.lastingMap().state().tableCount() + 24 + 16 + AFTER_CHAIN_SPREADS;  // versions 8, 9, 12, 13 and later, after it
 	const size_t at = good.size() - 1 - sizes - section;  // the section's type count
 	std::vector<uint8_t> bad = good;
 	bad[at] = 65, bad[at + 1] = bad[at + 2] = bad[at + 3] = 0;  // little-endian 65
@@ -245,8 +310,8 @@ TEST(SweptGridMap, TableSizesRoundTripAndAreReadStrictly)
 	const double nan = std::nan("");
 	// The last table's reported width offset; after it version 9's sensor noise (24 bytes),
 	// version 11's spreads of the one class (16), version 12's batch (16), version 13's chain
-	// spreads (24 a table), version 14's Manhattan walls (25) and MRPT's end flag.
-	std::memcpy(&bad[bad.size() - 1 - 25 - 24 * s.tableCount() - 16 - 16 - 24 - 8], &nan, 8);
+	// spreads (24 a table), the later versions' tails and MRPT's end flag.
+	std::memcpy(&bad[bad.size() - 1 - AFTER_CHAIN_SPREADS - 24 * s.tableCount() - 16 - 16 - 24 - 8], &nan, 8);
 	EXPECT_THROW(read(bad), std::exception);
 }
 
@@ -282,9 +347,9 @@ TEST(SweptGridMap, SensorNoiseRoundTripsAndThePoseSpreadsWithIt)
 		std::vector<uint8_t> bad = good;
 		// sigma_r, the first of version 9's three doubles; after them version 11's spreads (no
 		// class here), version 12's batch (16 bytes), version 13's chain spreads (24 a table),
-		// version 14's Manhattan walls (25) and MRPT's end flag.
+		// the later versions' tails and MRPT's end flag.
 		ASSERT_TRUE(a.modelParams.classes.empty());
-		std::memcpy(&bad[bad.size() - 1 - 25 - 24 * a.lastingMap().state().tableCount() - 16 - 24], &v, 8);
+		std::memcpy(&bad[bad.size() - 1 - AFTER_CHAIN_SPREADS - 24 * a.lastingMap().state().tableCount() - 16 - 24], &v, 8);
 		EXPECT_THROW(read(bad), std::exception) << v;
 	}
 }

@@ -18,6 +18,8 @@
 #include <limits>
 #include <random>
 
+#include "StreamTail.h"
+
 using namespace whiskermap;
 
 namespace
@@ -177,14 +179,14 @@ TEST(WallMap, VersionNineStreamsLoadTheWallsWithoutEndCapCosts)
 	const auto* begin = static_cast<const uint8_t*>(buf.getRawBufferData());
 	std::vector<uint8_t> bytes(begin, begin + buf.getTotalBytesCount());
 	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
-	ASSERT_EQ(bytes[1 + name.size()], 14);
+	ASSERT_EQ(bytes[1 + name.size()], maps::test::STREAM_VERSION);
 	const std::vector<uint8_t> current = bytes;
 	bytes[1 + name.size()] = 9;
 	// version 11's tail (two spreads per class), version 12's (the batch: 16 bytes), version
-	// 13's (three doubles per lasting table) and version 14's (Manhattan walls: a bool and
-	// three doubles), before MRPT's end flag, go first
+	// 13's (three doubles per lasting table) and the later versions' (StreamTail.h), before
+	// MRPT's end flag, go first
 	const long spreads = 16 * static_cast<long>(a.modelParams.classes.size()), batch = 16,
-			   chain = 24 * static_cast<long>(a.lastingMap().state().tableCount()) + 25;
+			   chain = 24 * static_cast<long>(a.lastingMap().state().tableCount()) + maps::test::AFTER_CHAIN_SPREADS;
 	bytes.erase(bytes.end() - 1 - spreads - batch - chain, bytes.end() - 1);
 	bool first = true;
 	for (const auto& w : walls)

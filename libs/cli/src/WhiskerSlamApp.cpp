@@ -46,14 +46,18 @@ std::string truthBeside(const std::string& rawlog)
 	return fs::exists(gt) ? gt.string() : "";
 }
 
-/** Every particle's map: no history kept (the outputs come from a rebuild), and the sweeps
- *  annealed together, the Manhattan walls and the walls' extension that the SLAM config asks for. */
+/** Every particle's map: no history kept and no swept grid that nothing reads (the outputs
+ *  come from a rebuild), and the sweeps annealed together, the Manhattan walls and the walls'
+ *  extension that the SLAM config asks for. */
 void particleMaps(mrpt::maps::TSetOfMetricMapInitializers& inits, const slam::TSlamParams& params)
 {
 	for (auto& def : inits)
 		if (auto* ours = dynamic_cast<maps::CHierarchicalObjectMap::TMapDefinition*>(def.get()))
 		{
 			ours->insertionOptions.keep_history = false;
+			// Nothing a particle's map is asked reads its swept grid unless these are on.
+			if (!ours->likelihoodOptions.sweep.use_swept_grid && !ours->modelParams.free_space)
+				ours->insertionOptions.record_swept = false;
 			if (params.batch_sweeps > 0) ours->insertionOptions.lasting.batch_sweeps = params.batch_sweeps;
 			if (params.wall_extension > 0) ours->likelihoodOptions.wall_extension = params.wall_extension;
 			if (!params.manhattan_walls) continue;

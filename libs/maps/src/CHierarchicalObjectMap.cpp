@@ -220,6 +220,7 @@ void CHierarchicalObjectMap::recordSwept(
 	const mrpt::poses::CPose2D& pose, const std::vector<obs::Shapelet>& shapelets,
 	const std::vector<obs::SweptSector>& sectors)
 {
+	if (!insertionOptions.record_swept) return;
 	if (m_sweptGrid.empty() && m_sweptGrid.cellSize() != insertionOptions.swept_cell)
 		m_sweptGrid.clear(insertionOptions.swept_cell);
 	std::vector<std::array<double, 2>> contacts;

@@ -62,6 +62,7 @@ void CHierarchicalObjectMap::TInsertionOptions::loadFromConfigFile(
 		use_sensor_noise = sec.boolean("use_sensor_noise", use_sensor_noise);
 		keep_history = sec.boolean("keep_history", keep_history);
 		swept_cell = sec.number("swept_cell", swept_cell, 0.005, 10);
+		record_swept = sec.boolean("record_swept", record_swept);
 		auto& m2 = consolidation;
 		m2.merge_distance = sec.number("merge_distance", m2.merge_distance, 0, 100);
 		m2.merge_angle = core::deg2rad(sec.number("merge_angle_deg", core::rad2deg(m2.merge_angle), 0, 90));
@@ -78,7 +79,7 @@ void CHierarchicalObjectMap::TInsertionOptions::dumpToTextStream(std::ostream& o
 		<< "\nlocal_sweeps_per_temperature=" << lasting.schedule.sweeps_per_temperature
 		<< "\nlocal_coldest_sweeps=" << lasting.schedule.coldest_sweeps
 		<< "\nlocal_polish_sweeps=" << lasting.schedule.polish_sweeps << "\nmemory_size=" << memory_size << "\nseed=" << seed << "\nuse_sensor_noise=" << use_sensor_noise
-		<< "\nkeep_history=" << keep_history << "\nswept_cell=" << swept_cell << "\nmerge_distance=" << consolidation.merge_distance
+		<< "\nkeep_history=" << keep_history << "\nswept_cell=" << swept_cell << "\nrecord_swept=" << record_swept << "\nmerge_distance=" << consolidation.merge_distance
 		<< "\nmerge_angle_deg=" << core::rad2deg(consolidation.merge_angle)
 		<< "\nevidence_margin=" << consolidation.evidence_margin << "\n";
 }
@@ -132,6 +133,11 @@ void CHierarchicalObjectMap::TMapDefinition::loadFromConfigFile_map_specific(
 	readSection(c, prefix + "_sampler", [&](core::IniSection& sec) {
 		samplerParams = inference::SamplerParams::fromIni(sec);
 	});
+	const bool reads = likelihoodOptions.sweep.use_swept_grid || modelParams.free_space;
+	if (!insertionOptions.record_swept && reads)
+		throw core::Error(
+			core::configLabel(c) + ": [" + prefix + "_insertOpts]: record_swept = false leaves the swept grid empty, but " +
+			(modelParams.free_space ? "the model's free_space" : "the likelihood's use_swept_grid") + " reads it");
 	// A misspelt section name would otherwise be ignored silently.
 	std::vector<std::string> sections;
 	c.getAllSections(sections);

@@ -8,7 +8,8 @@
 // insertion's sensor noise; versions before 10 without the walls' end-cap costs (0); versions
 // before 11 with every class's legs nominal; versions before 12 with every sweep annealed at
 // once; versions before 13 without the posterior chain's pose spreads (none); versions before
-// 14 without Manhattan walls and with walls as mapped in the likelihood.
+// 14 without Manhattan walls and with walls as mapped in the likelihood; versions before 15
+// recording every sweep in the swept grid.
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/model/ObjectCatalogue.h>
@@ -317,7 +318,7 @@ void readChainSpreads(CArchive& in, model::LastingState& s)
 }
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 14; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 15; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -385,6 +386,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	writeChainSpreads(out, m_lasting.state());
 	// Version 14: Manhattan walls, and the likelihood's wall extension.
 	out << m.manhattan_walls << m.wall_axis << likelihoodOptions.wall_extension << likelihoodOptions.wall_extension_min_length;
+	// Version 15: whether sweeps are recorded in the swept grid.
+	out << insertionOptions.record_swept;
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -406,6 +409,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 12:
 		case 13:
 		case 14:
+		case 15:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -523,6 +527,8 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 					  lo.wall_extension_min_length <= 100))
 					THROW_EXCEPTION("CHierarchicalObjectMap: corrupt likelihood options (a wall extension not in [0, 100] m)");
 			}
+			insertionOptions.record_swept = true;  // versions before 15 recorded every sweep
+			if (version >= 15) in >> insertionOptions.record_swept;
 			if (!(m.sigma_corner > 0) || !std::isfinite(m.sigma_corner))
 				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt model (sigma_corner not a positive number)");
 			m_consolidator.setObjects(std::move(objs));

@@ -64,6 +64,10 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 		/** Edge (metres) of the swept grid's cells: where the map explored, its free space and
 		 *  where it was touched (model::SweptGrid; the sweep likelihood's eqs. L1-L5). */
 		double swept_cell = 0.1;
+		/** Record each sweep in the swept grid. Off, the grid stays empty: for a map whose
+		 *  likelihood (use_swept_grid) and model (free_space) do not read it, such as a particle
+		 *  filter's maps (whisker-slam turns it off there); neither may then be on. */
+		bool record_swept = true;
 		TableConsolidator::TOptions consolidation;
 		void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
 		void dumpToTextStream(std::ostream& out) const override;

@@ -1,0 +1,15 @@
+#pragma once
+// The map stream's layout, as far as the serialization tests cut and corrupt it
+// (doc/map-plugin.md, "Serialization"): one place to edit when a version appends a field.
+namespace whiskermap::maps::test
+{
+/** The version CHierarchicalObjectMap writes. */
+constexpr int STREAM_VERSION = 15;
+/** Version 14's tail: manhattan_walls (a bool), wall_axis, wall_extension and
+ *  wall_extension_min_length (doubles). */
+constexpr long MANHATTAN_BYTES = 1 + 8 + 8 + 8;
+/** Version 15's tail: record_swept (a bool). */
+constexpr long RECORD_SWEPT_BYTES = 1;
+/** What the versions after 13 write after version 13's chain spreads, before MRPT's end flag. */
+constexpr long AFTER_CHAIN_SPREADS = MANHATTAN_BYTES + RECORD_SWEPT_BYTES;
+}  // namespace whiskermap::maps::test
