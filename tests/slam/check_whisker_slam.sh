@@ -31,6 +31,8 @@ assert set(s["time_per_step_ms"]) == {"mean", "median", "p95", "max"}, "time_per
 assert len(s["ess"]) == s["sweeps"] and all(0 < e <= 1 for e in s["ess"]), "ess"
 assert s["resamplings"] >= 0 and s["map_matches_best_particle"] is True, "resamplings/map_matches_best_particle"
 assert "trajectory" in s["estimated"] and "trajectory" in s["odometry"], "estimated/odometry"
+m = s["filter_peak_rss_mb"]  # a high-water mark: it can only grow, and the outputs come after
+assert 0 < m["first_tenth"] <= m["end"] <= s["peak_rss_mb"], "filter_peak_rss_mb"
 PY
 # The recorded odometry is the rawlog's, as whisker-sim wrote it (same poses, same columns).
 awk -v n=$sweeps '!/^%/ && k++ < n' "${data}_obs_odometry_path.txt" > "$work/odometry_prefix.txt"

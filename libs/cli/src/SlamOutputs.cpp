@@ -96,6 +96,7 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 	}
 	j["wall_time_s"] = run.wallSeconds;
 	j["peak_rss_mb"] = usage.ru_maxrss / 1024.0;
+	j["filter_peak_rss_mb"] = {{"first_tenth", run.filterRssTenthMb}, {"end", run.filterRssMb}};
 	std::ofstream f(path);
 	f << j.dump(2) << "\n";
 	if (!f) throw core::Error(path + ": write failed");

@@ -1,3 +1,4 @@
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -64,6 +65,14 @@ void particleMaps(mrpt::maps::TSetOfMetricMapInitializers& inits, const slam::TS
 			ours->modelParams.walls = ours->modelParams.manhattan_walls = true;
 			ours->modelParams.wall_axis = params.wall_axis;
 		}
+}
+
+/** The process's peak resident memory so far, MB. */
+double peakRssMb()
+{
+	rusage usage{};
+	getrusage(RUSAGE_SELF, &usage);
+	return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
 /** The same tables, in any order (table ids, hence the order, may differ: the particle's map
@@ -141,11 +150,13 @@ int run(Options& o)
 		slam.settle(settled);
 		result.steps.add(step.ms, step.ess, step.resampled, slam.paths().nodes());
 		k++;
+		if (k == std::max<size_t>(n / 10, 1)) result.filterRssTenthMb = peakRssMb();
 		if (bar && (k % 10 == 0 || k == n))
 			std::fprintf(stderr, "\rwhisker-slam: %zu/%zu sweeps, %u particles, ESS %.2f", k, n, params.particles,
 						 step.ess);
 	});
 	if (bar) std::fprintf(stderr, "\n");
+	result.filterRssMb = peakRssMb();
 	odometry.close();
 	for (const auto& p : slam.bestPath()) settled(p);
 

@@ -33,6 +33,9 @@ struct SlamOutputs
 		std::vector<world::Table> mapTables;  ///< the best particle's map
 		bool mapMatches = false;  ///< the rebuilt map equals the best particle's map
 		double wallSeconds = 0;
+		/** The process's peak resident memory (MB) after the first tenth of the filter's steps
+		 *  and after its last step, before the outputs are made: the filter's growth. */
+		double filterRssTenthMb = 0, filterRssMb = 0;
 	};
 
 	/** Writes paths.png and summary.json into `out`; returns a one-line result for the terminal. */
