@@ -1,5 +1,3 @@
-#include <sys/resource.h>
-
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/opengl/CBox.h>
 #include <mrpt/opengl/CGridPlaneXY.h>
@@ -8,6 +6,7 @@
 #include <mrpt/opengl/CSetOfLines.h>
 #include <whiskermap/cli/MapOutputs.h>
 #include <whiskermap/core/Error.h>
+#include <whiskermap/core/peakRssMb.h>
 #include <whiskermap/eval/EvalReport.h>
 #include <whiskermap/eval/ObjectsOnWalls.h>
 #include <whiskermap/maps/MapCsv.h>
@@ -256,8 +255,6 @@ void MapOutputs::writeSummary(
 {
 	uint64_t proposals = 0;
 	for (auto n : m_map.proposed()) proposals += n;
-	rusage usage{};
-	::getrusage(RUSAGE_SELF, &usage);
 	const auto fixed = [](double v, int decimals) { return std::round(v * std::pow(10, decimals)) / std::pow(10, decimals); };
 	nlohmann::ordered_json j;  // a JSON writer: any path (quotes, backslashes) stays valid JSON
 	j["input"] = m_s.input;
@@ -291,7 +288,7 @@ void MapOutputs::writeSummary(
 	j["time_per_pose_ms"] = {{"median", fixed(percentile(m_ms.items(), 0.5), 4)}, {"p95", fixed(percentile(m_ms.items(), 0.95), 4)}};
 	j["proposals_per_second"] = std::round(m_totalMs > 0 ? proposals / (m_totalMs / 1000) : 0.0);
 	j["wall_time_s"] = fixed(wallSeconds, 3);
-	j["peak_rss_mb"] = fixed(usage.ru_maxrss / 1024.0, 1);
+	j["peak_rss_mb"] = fixed(core::peakRssMb(), 1);
 	if (!metricsJson.empty()) j["metrics"] = nlohmann::ordered_json::parse(metricsJson);
 	std::ofstream f(path);
 	f << j.dump(2) << "\n";

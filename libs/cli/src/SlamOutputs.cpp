@@ -1,7 +1,6 @@
-#include <sys/resource.h>
-
 #include <whiskermap/cli/SlamOutputs.h>
 #include <whiskermap/core/Error.h>
+#include <whiskermap/core/peakRssMb.h>
 #include <whiskermap/eval/EvalReport.h>
 #include <whiskermap/render/TopDownImage.h>
 
@@ -71,8 +70,6 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 	const auto& st = run.steps;
 	nlohmann::ordered_json ess = nlohmann::ordered_json::array();  // normalised ESS before resampling
 	for (const double e : st.ess.items()) ess.push_back(std::round(e * 1e4) / 1e4);
-	rusage usage{};
-	::getrusage(RUSAGE_SELF, &usage);
 	const auto& p = *run.params;
 	nlohmann::ordered_json j;  // a JSON writer: any path (quotes, backslashes) stays valid JSON
 	j["input"] = run.input, j["config"] = run.config, j["map_config"] = run.mapConfig;
@@ -95,7 +92,7 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 		j["odometry"] = trajectoryJson(scores->odometry);
 	}
 	j["wall_time_s"] = run.wallSeconds;
-	j["peak_rss_mb"] = usage.ru_maxrss / 1024.0;
+	j["peak_rss_mb"] = core::peakRssMb();
 	j["filter_peak_rss_mb"] = {{"first_tenth", run.filterRssTenthMb}, {"end", run.filterRssMb}};
 	std::ofstream f(path);
 	f << j.dump(2) << "\n";

@@ -1,4 +1,3 @@
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -11,6 +10,7 @@
 #include <whiskermap/cli/runApp.h>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/core/Error.h>
+#include <whiskermap/core/peakRssMb.h>
 #include <whiskermap/maps/MapConfig.h>
 #include <whiskermap/slam/RbpfSlam.h>
 #include <whiskermap/world/PathLog.h>
@@ -56,23 +56,13 @@ void particleMaps(mrpt::maps::TSetOfMetricMapInitializers& inits, const slam::TS
 		if (auto* ours = dynamic_cast<maps::CHierarchicalObjectMap::TMapDefinition*>(def.get()))
 		{
 			ours->insertionOptions.keep_history = false;
-			// Nothing a particle's map is asked reads its swept grid unless these are on.
-			if (!ours->likelihoodOptions.sweep.use_swept_grid && !ours->modelParams.free_space)
-				ours->insertionOptions.record_swept = false;
+			if (!ours->sweptGridRead()) ours->insertionOptions.record_swept = false;
 			if (params.batch_sweeps > 0) ours->insertionOptions.lasting.batch_sweeps = params.batch_sweeps;
 			if (params.wall_extension > 0) ours->likelihoodOptions.wall_extension = params.wall_extension;
 			if (!params.manhattan_walls) continue;
 			ours->modelParams.walls = ours->modelParams.manhattan_walls = true;
 			ours->modelParams.wall_axis = params.wall_axis;
 		}
-}
-
-/** The process's peak resident memory so far, MB. */
-double peakRssMb()
-{
-	rusage usage{};
-	getrusage(RUSAGE_SELF, &usage);
-	return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
 /** The same tables, in any order (table ids, hence the order, may differ: the particle's map
@@ -150,13 +140,13 @@ int run(Options& o)
 		slam.settle(settled);
 		result.steps.add(step.ms, step.ess, step.resampled, slam.paths().nodes());
 		k++;
-		if (k == std::max<size_t>(n / 10, 1)) result.filterRssTenthMb = peakRssMb();
+		if (k == std::max<size_t>(n / 10, 1)) result.filterRssTenthMb = core::peakRssMb();
 		if (bar && (k % 10 == 0 || k == n))
 			std::fprintf(stderr, "\rwhisker-slam: %zu/%zu sweeps, %u particles, ESS %.2f", k, n, params.particles,
 						 step.ess);
 	});
 	if (bar) std::fprintf(stderr, "\n");
-	result.filterRssMb = peakRssMb();
+	result.filterRssMb = core::peakRssMb();
 	odometry.close();
 	for (const auto& p : slam.bestPath()) settled(p);
 

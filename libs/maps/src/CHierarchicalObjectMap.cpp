@@ -220,7 +220,6 @@ void CHierarchicalObjectMap::recordSwept(
 	const mrpt::poses::CPose2D& pose, const std::vector<obs::Shapelet>& shapelets,
 	const std::vector<obs::SweptSector>& sectors)
 {
-	if (!insertionOptions.record_swept) return;
 	if (m_sweptGrid.empty() && m_sweptGrid.cellSize() != insertionOptions.swept_cell)
 		m_sweptGrid.clear(insertionOptions.swept_cell);
 	std::vector<std::array<double, 2>> contacts;
@@ -233,7 +232,7 @@ void CHierarchicalObjectMap::insertLasting(const obs::CObservationWhiskerContact
 	TStepInput in;
 	in.pose = pose;
 	in.shapelets = sweep.toShapelets(pose);
-	recordSwept(pose, in.shapelets, sweep.toSweptSectors(pose));
+	if (insertionOptions.record_swept) recordSwept(pose, in.shapelets, sweep.toSweptSectors(pose));
 	in.seed = splitmix64(insertionOptions.seed ^ splitmix64(m_steps));
 	in.model = modelFor(sweep.noise);
 	m_lastNoise = sweep.noise;
@@ -270,7 +269,7 @@ TStepInput CHierarchicalObjectMap::prepareStep(
 	in.pose = pose;
 	in.shapelets = sweep.toShapelets(pose);
 	const auto sectors = sweep.toSweptSectors(pose);
-	recordSwept(pose, in.shapelets, sectors);
+	if (insertionOptions.record_swept) recordSwept(pose, in.shapelets, sectors);
 	m_memory.add(in.shapelets);  // working memory: the N most recent shapelets
 	in.memory = m_memory.shapelets();
 	in.seed = splitmix64(insertionOptions.seed ^ splitmix64(m_steps));

@@ -133,8 +133,7 @@ void CHierarchicalObjectMap::TMapDefinition::loadFromConfigFile_map_specific(
 	readSection(c, prefix + "_sampler", [&](core::IniSection& sec) {
 		samplerParams = inference::SamplerParams::fromIni(sec);
 	});
-	const bool reads = likelihoodOptions.sweep.use_swept_grid || modelParams.free_space;
-	if (!insertionOptions.record_swept && reads)
+	if (!insertionOptions.record_swept && sweptGridRead())
 		throw core::Error(
 			core::configLabel(c) + ": [" + prefix + "_insertOpts]: record_swept = false leaves the swept grid empty, but " +
 			(modelParams.free_space ? "the model's free_space" : "the likelihood's use_swept_grid") + " reads it");

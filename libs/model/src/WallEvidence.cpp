@@ -117,7 +117,7 @@ Wall WallEvidence::fit(double thickness, std::optional<double> axis) const
 		const auto nearest = [&](double v) { return std::round((m_phi + v - *axis) / M_PI_2); };
 		// k is monotone in d: when both ends of the search's interval give the same k, so does
 		// the optimum, which is then not searched for.
-		const double k = nearest(lo) == nearest(hi) ? nearest(lo) : nearest(freeYaw(lo, hi, thickness));
+		const double kLo = nearest(lo), k = kLo == nearest(hi) ? kLo : nearest(freeYaw(lo, hi, thickness));
 		d = *axis + k * M_PI_2 - m_phi;
 	}
 	else

@@ -256,6 +256,8 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	TRenderOptions renderOptions;
 	model::ModelParams modelParams;
 	inference::SamplerParams samplerParams;
+	/** Whether the map's likelihood (use_swept_grid) or model (free_space) reads the swept grid. */
+	bool sweptGridRead() const { return likelihoodOptions.sweep.use_swept_grid || modelParams.free_space; }
 	MAP_DEFINITION_END(CHierarchicalObjectMap)
 };
 }  // namespace whiskermap::maps
