@@ -124,3 +124,26 @@ TEST(Blackboard, EvidenceOfAReusedSlotIsTheNewLegs)
 	const Id m = bb.addLeg(squareLeg(0.7, 0.3), e);
 	EXPECT_EQ(bb.evidence(m).count(), 1u);
 }
+
+// The board keeps each wall's frame as the wall is added, moved, and its slot reused.
+TEST(Blackboard, WallFramesFollowTheirWalls)
+{
+	const auto same = [](const Wall::Frame& a, const Wall::Frame& b) {
+		bool eq = a.len == b.len && a.ux == b.ux && a.uy == b.uy;
+		for (int k = 0; k < 4; k++) eq = eq && a.normal[k] == b.normal[k];
+		return eq;
+	};
+	ModelParams p;
+	Blackboard bb(p);
+	bb.reset({{0.5, 0.3, 0, 0.5, 0}});
+	const Wall a{0, 0, 2, 0, 0.1, 0.3}, b{1, 1, 1, 3, 0.1, 0.3}, c{-1, 0.5, 0.2, -0.4, 0.1, 0.3};
+	const Id wa = bb.addWall(a), wb = bb.addWall(b);
+	EXPECT_TRUE(same(bb.wallFrame(wa), a.frame()));
+	EXPECT_TRUE(same(bb.wallFrame(wb), b.frame()));
+	bb.setWall(wa, c);
+	EXPECT_TRUE(same(bb.wallFrame(wa), c.frame()));
+	EXPECT_FALSE(same(bb.wallFrame(wa), a.frame()));
+	bb.removeWall(wb);
+	EXPECT_EQ(bb.addWall(a), wb);  // the slot is reused, with the new wall's frame
+	EXPECT_TRUE(same(bb.wallFrame(wb), a.frame()));
+}

@@ -121,6 +121,17 @@ TEST(Wall, FrameQueriesMatchThePointQueries)
 		EXPECT_EQ(a.normal, b.normal);
 	}
 	EXPECT_EQ(fr.len, w.length());
+	// Each face's normal (computed once per frame) is its outward direction: +-n = +-(-uy, ux)
+	// for the long faces, +-u for the end caps.
+	const double ux = (w.x1 - w.x0) / w.length(), uy = (w.y1 - w.y0) / w.length();
+	const double out[4][2] = {{-uy, ux}, {uy, -ux}, {ux, uy}, {-ux, -uy}};
+	for (int k = 0; k < 4; k++)
+	{
+		EXPECT_EQ(Wall::faceIndex(Wall::FACES[k]), k);
+		EXPECT_NEAR(std::cos(fr.normal[k]), out[k][0], 1e-12) << Wall::FACES[k];
+		EXPECT_NEAR(std::sin(fr.normal[k]), out[k][1], 1e-12) << Wall::FACES[k];
+		EXPECT_EQ(w.hit(fr, 0.7, -0.2, Wall::FACES[k]).normal, fr.normal[k]);
+	}
 }
 
 TEST(Wall, ShapeletDensityByHand)

@@ -227,7 +227,7 @@ Id BlackboardSampler::bestWallFor(size_t s, double& gain) const
 	for (Id w = 0; w < m_bb.wallIdBound(); w++)
 	{
 		if (!m_bb.hasWall(w)) continue;
-		const double g = model::logNoisyOr(model::logShapeletGivenWall(m_bb.shapelets()[s], m_bb.wall(w), m_model),
+		const double g = model::logNoisyOr(model::logShapeletGivenWall(m_bb.shapelets()[s], m_bb.wall(w), m_bb.wallFrame(w), m_model),
 										   model::logShapeletNull(m_model)) -
 						 model::logShapeletNull(m_model);
 		if (g > gain) gain = g, best = w;

@@ -46,11 +46,12 @@ std::optional<WallCandidate> proposeWall(const model::Blackboard& bb, size_t see
 	guide.thickness = p.wall_thickness;
 	guide.x0 = s0.x - nx * p.wall_thickness / 2, guide.y0 = s0.y - ny * p.wall_thickness / 2;
 	guide.x1 = guide.x0 + ux, guide.y1 = guide.y0 + uy;  // face +1 (left of u) has normal n
+	const model::Wall::Frame fr = guide.frame();
 	model::WallEvidence e;
 	for (size_t k = lo; k <= hi; k++)
 	{
 		c.inliers.push_back(along[k].second);
-		e.add(bb.shapelets()[static_cast<size_t>(along[k].second)], guide, p);
+		e.add(bb.shapelets()[static_cast<size_t>(along[k].second)], guide, fr, p);
 	}
 	std::sort(c.inliers.begin(), c.inliers.end());
 	c.wall = e.fit(p.wall_thickness, p.wallAxis());
@@ -61,7 +62,7 @@ bool fitWall(const model::Blackboard& bb, Id w, model::Wall& out)
 {
 	if (!bb.wallExplains(w)) return false;
 	model::WallEvidence e = bb.wallEvidence(w);
-	for (const Id s : bb.shapeletsOfWall(w)) e.add(bb.shapelets()[static_cast<size_t>(s)], bb.wall(w), bb.params());
+	for (const Id s : bb.shapeletsOfWall(w)) e.add(bb.shapelets()[static_cast<size_t>(s)], bb.wall(w), bb.wallFrame(w), bb.params());
 	out = e.fit(bb.params().wall_thickness, bb.params().wallAxis());
 	return true;
 }

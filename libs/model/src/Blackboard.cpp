@@ -133,9 +133,10 @@ Id Blackboard::addWall(const Wall& w, const WallEvidence& evidence)
 {
 	const Id id = m_walls.add(w);
 	const auto n = static_cast<size_t>(m_walls.capacity());
-	if (m_wallShapelets.size() < n) m_wallShapelets.resize(n), m_wallEvidence.resize(n);
+	if (m_wallShapelets.size() < n) m_wallShapelets.resize(n), m_wallEvidence.resize(n), m_wallFrames.resize(n);
 	m_wallShapelets[id].clear();
 	m_wallEvidence[id] = evidence;
+	m_wallFrames[static_cast<size_t>(id)] = w.frame();
 	return id;
 }
 

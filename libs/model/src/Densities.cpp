@@ -210,7 +210,12 @@ int bestWallFace(const obs::Shapelet& s, const Wall& w, const Wall::Frame& fr, c
 
 double logShapeletGivenWall(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
 {
-	const double best = bestWallFaceCost(s, w, w.frame(), p).second;
+	return logShapeletGivenWall(s, w, w.frame(), p);
+}
+
+double logShapeletGivenWall(const obs::Shapelet& s, const Wall& w, const Wall::Frame& fr, const ModelParams& p)
+{
+	const double best = bestWallFaceCost(s, w, fr, p).second;
 	return core::cachedLog(p.alpha_S) - best - sq((w.texture - s.texture) / p.sigma_tau);  // eq. 22
 }
 

@@ -312,7 +312,7 @@ void LastingState::replace(
 		if (w == NONE) continue;
 		// A contact a wall explains is folded into the wall's evidence and leaves the store.
 		StoredWall& sw = m_walls[wallIndex[static_cast<size_t>(w)]];
-		sw.evidence.add(m_contacts[r.contacts[i]].shapelet, sw.wall, model);
+		sw.evidence.add(m_contacts[r.contacts[i]].shapelet, sw.wall, solved.wallFrame(w), model);
 		m_contactGrid.erase(r.contacts[i], m_contacts[r.contacts[i]].shapelet.x, m_contacts[r.contacts[i]].shapelet.y);
 		m_contacts.remove(r.contacts[i]);
 	}

@@ -102,7 +102,7 @@ double evidenceGain(const Blackboard& bb, Id l)
 double wallEvidenceGain(const Blackboard& bb, Id w)
 {
 	const WallEvidence& e = bb.wallEvidence(w);
-	return e.empty() ? 0 : e.logLikelihood(bb.wall(w), bb.params()) - e.count() * logShapeletNull(bb.params());
+	return e.empty() ? 0 : e.logLikelihood(bb.wall(w), bb.wallFrame(w), bb.params()) - e.count() * logShapeletNull(bb.params());
 }
 
 // A wall's own factors: its cell (eq. 23), its folded contacts, and with free space on the
@@ -124,7 +124,7 @@ double logShapeletLinked(const Blackboard& bb, size_t s)
 	const Id w = bb.shapeletWall(s);
 	if (w == NONE) return logShapeletDensity(bb, s, bb.shapeletParent(s));
 	const ModelParams& p = bb.params();
-	return logNoisyOr(logShapeletGivenWall(bb.shapelets()[s], bb.wall(w), p), logShapeletNull(p));
+	return logNoisyOr(logShapeletGivenWall(bb.shapelets()[s], bb.wall(w), bb.wallFrame(w), p), logShapeletNull(p));
 }
 
 double logJoint(const Blackboard& bb)

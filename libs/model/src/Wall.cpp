@@ -29,8 +29,9 @@ OrientedRect Wall::rect() const
 
 Wall::Frame Wall::frame() const
 {
-	const double len = length();
-	return {len, len > 0 ? (x1 - x0) / len : 1, len > 0 ? (y1 - y0) / len : 0};
+	const double len = length(), ux = len > 0 ? (x1 - x0) / len : 1, uy = len > 0 ? (y1 - y0) / len : 0;
+	// Long face side s: normal s * n with n = (-uy, ux); the caps: +-u.
+	return {len, ux, uy, {std::atan2(ux, -uy), std::atan2(-ux, uy), std::atan2(uy, ux), std::atan2(-uy, -ux)}};
 }
 
 Wall::FaceHit Wall::face(const Frame& fr, double x, double y, int side) const
@@ -43,7 +44,7 @@ Wall::FaceHit Wall::face(const Frame& fr, double x, double y, int side) const
 	h.across = side * offset - thickness / 2;
 	h.along = along;
 	h.excess = std::max({0.0, -along, along - fr.len});
-	h.normal = std::atan2(side * ux, -side * uy);  // side * n
+	h.normal = fr.normal[faceIndex(side)];
 	return h;
 }
 
@@ -57,7 +58,7 @@ Wall::FaceHit Wall::hit(const Frame& fr, double x, double y, int f) const
 	h.across = f > 0 ? along - fr.len : -along;
 	h.along = offset;
 	h.excess = std::max(0.0, std::abs(offset) - thickness / 2);
-	h.normal = f > 0 ? std::atan2(uy, ux) : std::atan2(-uy, -ux);
+	h.normal = fr.normal[faceIndex(f)];
 	return h;
 }
 

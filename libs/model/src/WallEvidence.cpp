@@ -11,9 +11,8 @@ namespace
 double sq(double v) { return v * v; }
 }  // namespace
 
-void WallEvidence::add(const obs::Shapelet& s, const Wall& w, const ModelParams& p)
+void WallEvidence::add(const obs::Shapelet& s, const Wall& w, const Wall::Frame& fr, const ModelParams& p)
 {
-	const Wall::Frame fr = w.frame();
 	const int side = bestWallFace(s, w, fr, p);
 	const bool cap = side == 2 || side == -2;
 	// The first contact anchors the moments; the reference normal is its face's (face +1's when
@@ -74,11 +73,10 @@ double WallEvidence::bestOffset(const Normal& n, double thickness) const
 	return (nx * (a.sx + b.sx) + ny * (a.sy + b.sy) - thickness / 2 * (a.w - b.w)) / w;
 }
 
-double WallEvidence::logLikelihood(const Wall& w, const ModelParams& p) const
+double WallEvidence::logLikelihood(const Wall& w, const Wall::Frame& fr, const ModelParams& p) const
 {
 	if (m_count == 0) return 0;
 	// The wall's face whose normal is within 90 deg of the reference one is face index 0.
-	const Wall::Frame fr = w.frame();
 	const Wall::FaceHit h = w.face(fr, m_ax, m_ay, 1);
 	const int side = std::cos(h.normal - m_phi) >= 0 ? 1 : -1;
 	const Wall::FaceHit hs = side == 1 ? h : w.face(fr, m_ax, m_ay, side);

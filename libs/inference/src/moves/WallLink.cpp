@@ -23,7 +23,7 @@ bool nearFace(const model::Blackboard& bb, Id w, size_t s)
 	const obs::Shapelet& sh = bb.shapelets()[s];
 	const model::Wall& wall = bb.wall(w);
 	if (wall.farFrom(sh.x, sh.y, p.parent_gate)) return false;  // within the gate of a face is within it of the slab
-	const model::Wall::Frame fr = wall.frame();
+	const model::Wall::Frame& fr = bb.wallFrame(w);
 	const int side = model::bestWallFace(sh, wall, fr, p);
 	const model::Wall::FaceHit h = wall.hit(fr, sh.x, sh.y, side);
 	return std::hypot(h.across, h.excess) <= p.parent_gate &&

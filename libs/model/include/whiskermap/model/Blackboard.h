@@ -87,11 +87,13 @@ class Blackboard
 	 *  both. A wall may carry folded evidence (the lasting map's). */
 	Id addWall(const Wall& w, const WallEvidence& evidence = {});
 	void removeWall(Id id);  ///< its shapelets lose their parent
-	void setWall(Id id, const Wall& w) { m_walls[id] = w; }
+	void setWall(Id id, const Wall& w) { m_walls[id] = w, m_wallFrames[static_cast<size_t>(id)] = w.frame(); }
 	/** Links shapelet to `wall` (leaving its leg or other wall); NONE: unlinks it from its wall. */
 	void setShapeletWall(size_t shapelet, Id wall);
 	bool hasWall(Id id) const { return m_walls.alive(id); }
 	const Wall& wall(Id id) const { return m_walls[id]; }
+	/** wall(id).frame(), kept as the wall changes. */
+	const Wall::Frame& wallFrame(Id id) const { return m_wallFrames[static_cast<size_t>(id)]; }
 	const WallEvidence& wallEvidence(Id id) const { return m_wallEvidence[id]; }
 	const std::vector<Id>& shapeletsOfWall(Id id) const { return m_wallShapelets[id]; }
 	Id shapeletWall(size_t s) const { return m_shapeletWall[s]; }
@@ -178,6 +180,7 @@ class Blackboard
 	const SweptGrid* m_grid = nullptr;
 	SlotVector<Wall> m_walls;
 	std::vector<WallEvidence> m_wallEvidence;  ///< per wall id
+	std::vector<Wall::Frame> m_wallFrames;  ///< per wall id
 	std::vector<std::vector<Id>> m_wallShapelets;  ///< per wall id, ascending
 	std::vector<Id> m_shapeletWall;  ///< per shapelet: its wall, or NONE
 };

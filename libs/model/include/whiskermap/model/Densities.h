@@ -78,6 +78,8 @@ double logShapeletGivenLeg(const obs::Shapelet& s, const Leg& l, const ModelPara
  *  outward normal (mod 360 deg) as eq. 7, texture as eq. 7. Under shaft noise the across term
  *  uses contactVariance (and its log-ratio gain). */
 double logShapeletGivenWall(const obs::Shapelet& s, const Wall& w, const ModelParams& p);
+/** The same with the wall's frame (Wall::frame(), Blackboard::wallFrame()). */
+double logShapeletGivenWall(const obs::Shapelet& s, const Wall& w, const Wall::Frame& fr, const ModelParams& p);
 /** The face (+1 or -1 a long face, +2 or -2 an end cap: Wall::hit) of eq. 22's minimum for
  *  contact s. */
 int bestWallFace(const obs::Shapelet& s, const Wall& w, const ModelParams& p);

@@ -34,11 +34,13 @@ struct Wall
 		double excess;  ///< distance past the extent along the line (0 within [0, length])
 		double normal;  ///< the face's outward normal angle, in (-pi, pi]
 	};
-	/** The centre line's length and unit direction (a degenerate wall points along x): what
-	 *  every query below needs, computed once for many points by the overloads taking it. */
+	/** The centre line's length and unit direction (a degenerate wall points along x) and the
+	 *  outward normal angle of each face: what every query below needs, computed once for
+	 *  many points by the overloads taking it (a Blackboard keeps each wall's). */
 	struct Frame
 	{
 		double len, ux, uy;
+		double normal[4];  ///< per face of FACES (faceIndex), in (-pi, pi]
 	};
 	Frame frame() const;
 	/** The point against face `side` (+1 or -1). */
@@ -51,6 +53,8 @@ struct Wall
 	FaceHit hit(double x, double y, int f) const { return hit(frame(), x, y, f); }
 	FaceHit hit(const Frame& fr, double x, double y, int f) const;
 	static constexpr int FACES[4] = {1, -1, 2, -2};
+	/** The index of face `f` in FACES. */
+	static constexpr int faceIndex(int f) { return 2 * ((f < 0 ? -f : f) - 1) + (f < 0); }
 	/** The point against the face on its side of the centre line (the nearer face). */
 	FaceHit nearestFace(double x, double y) const;
 	/** Exact distance from the point to the face segment of `side`: hypot(across, excess). */
