@@ -33,6 +33,8 @@ assert s["resamplings"] >= 0 and s["map_matches_best_particle"] is True, "resamp
 assert "trajectory" in s["estimated"] and "trajectory" in s["odometry"], "estimated/odometry"
 m = s["filter_peak_rss_mb"]  # a high-water mark: it can only grow, and the outputs come after
 assert 0 < m["first_tenth"] <= m["end"] <= s["peak_rss_mb"], "filter_peak_rss_mb"
+h = s["filter_heap_mb"]  # live heap at the same points: part of the resident memory, never all of it
+assert all(0 < h[k] < m[k] for k in ("first_tenth", "end")), "filter_heap_mb"
 PY
 # The recorded odometry is the rawlog's, as whisker-sim wrote it (same poses, same columns).
 awk -v n=$sweeps '!/^%/ && k++ < n' "${data}_obs_odometry_path.txt" > "$work/odometry_prefix.txt"

@@ -94,6 +94,7 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 	j["wall_time_s"] = run.wallSeconds;
 	j["peak_rss_mb"] = core::peakRssMb();
 	j["filter_peak_rss_mb"] = {{"first_tenth", run.filterRssTenthMb}, {"end", run.filterRssMb}};
+	j["filter_heap_mb"] = {{"first_tenth", run.filterHeapTenthMb}, {"end", run.filterHeapMb}};
 	std::ofstream f(path);
 	f << j.dump(2) << "\n";
 	if (!f) throw core::Error(path + ": write failed");

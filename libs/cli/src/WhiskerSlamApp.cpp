@@ -10,6 +10,7 @@
 #include <whiskermap/cli/runApp.h>
 #include <whiskermap/core/ConfigPaths.h>
 #include <whiskermap/core/Error.h>
+#include <whiskermap/core/heapInUseMb.h>
 #include <whiskermap/core/peakRssMb.h>
 #include <whiskermap/maps/MapConfig.h>
 #include <whiskermap/slam/RbpfSlam.h>
@@ -140,13 +141,14 @@ int run(Options& o)
 		slam.settle(settled);
 		result.steps.add(step.ms, step.ess, step.resampled, slam.paths().nodes());
 		k++;
-		if (k == std::max<size_t>(n / 10, 1)) result.filterRssTenthMb = core::peakRssMb();
+		if (k == std::max<size_t>(n / 10, 1)) result.filterRssTenthMb = core::peakRssMb(), result.filterHeapTenthMb = core::heapInUseMb();
 		if (bar && (k % 10 == 0 || k == n))
 			std::fprintf(stderr, "\rwhisker-slam: %zu/%zu sweeps, %u particles, ESS %.2f", k, n, params.particles,
 						 step.ess);
 	});
 	if (bar) std::fprintf(stderr, "\n");
 	result.filterRssMb = core::peakRssMb();
+	result.filterHeapMb = core::heapInUseMb();
 	odometry.close();
 	for (const auto& p : slam.bestPath()) settled(p);
 

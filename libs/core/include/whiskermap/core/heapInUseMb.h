@@ -1,0 +1,9 @@
+#pragma once
+
+namespace whiskermap::core
+{
+/** The bytes malloc holds for live allocations now (glibc's mallinfo2: uordblks plus the
+ *  mmapped blocks), in MB. Beside peakRssMb() it tells live data from the allocator's free
+ *  but unreturned memory. */
+double heapInUseMb();
+}  // namespace whiskermap::core
