@@ -94,7 +94,8 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 	j["wall_time_s"] = run.wallSeconds;
 	j["peak_rss_mb"] = core::peakRssMb();
 	j["filter_peak_rss_mb"] = {{"first_tenth", run.filterRssTenthMb}, {"end", run.filterRssMb}};
-	j["filter_heap_mb"] = {{"first_tenth", run.filterHeapTenthMb}, {"end", run.filterHeapMb}};
+	const auto known = [](double mb) { return std::isnan(mb) ? nlohmann::json() : nlohmann::json(mb); };  // null: not measured
+	j["filter_heap_mb"] = {{"first_tenth", known(run.filterHeapTenthMb)}, {"end", known(run.filterHeapMb)}};
 	std::ofstream f(path);
 	f << j.dump(2) << "\n";
 	if (!f) throw core::Error(path + ": write failed");

@@ -36,7 +36,7 @@ struct SlamOutputs
 		/** The process's peak resident memory (MB) after the first tenth of the filter's steps
 		 *  and after its last step, before the outputs are made: the filter's growth. */
 		double filterRssTenthMb = 0, filterRssMb = 0;
-		/** The heap in live use (MB, core::heapInUseMb) at the same two points. */
+		/** The heap in live use (MB, core::heapInUseMb: NaN if not measured) at the same two points. */
 		double filterHeapTenthMb = 0, filterHeapMb = 0;
 	};
 
