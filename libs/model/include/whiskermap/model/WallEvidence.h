@@ -31,6 +31,7 @@ class WallEvidence
 	void add(const obs::Shapelet& s, const Wall& w, const Wall::Frame& fr, const ModelParams& p);
 	/** sum_i log p(S_i | W) over the folded contacts (eq. 22). */
 	double logLikelihood(const Wall& w, const ModelParams& p) const { return logLikelihood(w, w.frame(), p); }
+	/** The same with the wall's frame (Wall::frame(), Blackboard::wallFrame()). */
 	double logLikelihood(const Wall& w, const Wall::Frame& fr, const ModelParams& p) const;
 	/** The wall of thickness `thickness` minimising the folded contacts' sum of Delta_WS (eq. 22)
 	 *  over yaw and centre-line offset (closed form in the offset, golden section in the yaw,
