@@ -1,0 +1,46 @@
+#pragma once
+#include <Eigen/Core>
+#include <whiskermap/baseline/Contact.h>
+#include <whiskermap/smooth/TSmoothParams.h>
+#include <whiskermap/world/Obstacle.h>
+
+#include <vector>
+
+namespace whiskermap::smooth
+{
+/** Least-squares smoothing of a SLAM path against its map (doc/slam.md, "Smoothing the path").
+ *
+ *  A particle filter's best particle is one draw from the posterior over paths: where the
+ *  sweeps say nothing (along a row with no contact), it wanders with the motion model's
+ *  random walk, and its map with it. The smoother finds the most probable path and map
+ *  shifts instead: the path's poses (the first fixed: the known start) and a shift per
+ *  solid group (each leg alone, the pieces of one straight wall together: WallLines) minimise
+ *    sum |odometry residuals|^2 (eq. S2) + sum huber(contact residuals) (eq. S3) + sum |d / solid_sigma|^2,
+ *  by Levenberg-Marquardt on the sparse normal equations. Contacts are tied to faces of the
+ *  map's solids (ContactFactor::associate) at the start of each round, from the current
+ *  estimate; a contact near no face is left out (it belongs to nothing the map holds). */
+class PathSmoother
+{
+   public:
+	struct TInput
+	{
+		std::vector<Eigen::Vector3d> path;  ///< the estimate to start from, one pose (x, y, yaw) per sweep
+		std::vector<Eigen::Vector3d> increments;  ///< odometry from sweep i-1 to i in i-1's frame; [0] unused
+		std::vector<Eigen::Matrix3d> covariances;  ///< each increment's motion-model covariance; [0] unused
+		std::vector<baseline::Contact> contacts;  ///< robot frame; `sweep` indexes the path
+		std::vector<world::Obstacle> solids;  ///< the map's legs and walls (table < 0: a wall)
+	};
+	struct TResult
+	{
+		std::vector<Eigen::Vector3d> path;
+		std::vector<Eigen::Vector2d> shifts;  ///< per group
+		std::vector<size_t> groupOf;  ///< per solid
+		size_t tied = 0;  ///< contacts tied to a face in the last round (of contacts.size())
+		double costBefore = 0, costAfter = 0;  ///< the objective at the start path (first round's ties) and at the end
+		unsigned rounds = 0, iterations = 0;
+	};
+
+	/** Throws core::Error on inconsistent input (sizes, a contact's sweep out of range). */
+	static TResult run(const TInput& in, const TSmoothParams& params);
+};
+}  // namespace whiskermap::smooth

@@ -1,0 +1,28 @@
+#pragma once
+#include <string>
+
+namespace whiskermap::smooth
+{
+/** The path smoother's settings: the [smooth] section of whisker-slam's .ini (doc/slam.md,
+ *  "Smoothing the path"). Read strictly: unknown keys are errors naming the file. */
+struct TSmoothParams
+{
+	bool enabled = true;  ///< smooth the best particle's path (off: the filter's path is the estimate)
+	double gate = 0.04;  ///< metres: a contact is tied to the nearest face of a mapped solid within this
+	double normal_gate = 0.7854;  ///< radians (key normal_gate_deg): its normal within this of the face's
+	double position_floor = 0.002;  ///< metres, added (in quadrature) to a contact's std-dev across its face
+	double huber = 2;  ///< Huber's loss beyond this many std-devs (contacts)
+	/** Metres: pieces of walls on parallel lines within this of each other are one wall
+	 *  (WallLines; 0: every piece on its own). */
+	double wall_merge = 0.1;
+	double solid_sigma = 1;  ///< metres: prior std-dev of each solid's shift (walls slide along themselves)
+	unsigned rounds = 6;  ///< association rounds (each re-ties the contacts, then solves)
+	unsigned iterations = 10;  ///< Levenberg-Marquardt iterations per round, at most
+	/** Smoothing passes: the first against the best particle's map, each further one against
+	 *  a map built afresh at the previous pass's path. */
+	unsigned passes = 2;
+
+	/** Reads [smooth] from `path` (absent section or keys: the defaults). */
+	static TSmoothParams load(const std::string& path);
+};
+}  // namespace whiskermap::smooth

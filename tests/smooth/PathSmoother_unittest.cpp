@@ -1,0 +1,117 @@
+#include <gtest/gtest.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/smooth/PathSmoother.h>
+
+#include <Eigen/Geometry>
+#include <random>
+
+using namespace whiskermap;
+using smooth::PathSmoother;
+
+namespace
+{
+/** A robot driving 2 m along +x in 5 cm steps, 0.3 m from a wall along y = 0.3 + 0.05 (its
+ *  face at y = 0.3) and towards an end wall whose face is at x = 2.4; odometry that reads every
+ *  step 5% long. Each sweep touches the side wall straight to the left and the end wall straight
+ *  ahead, with exact readings. */
+struct Corridor
+{
+	std::vector<Eigen::Vector3d> truth, odometry;
+	PathSmoother::TInput in;
+
+	Corridor()
+	{
+		const size_t n = 41;
+		const Eigen::Matrix3d cov = Eigen::Vector3d(1e-4, 1e-4, 1e-4).asDiagonal();  // 1 cm, 0.57 degree a step
+		for (size_t i = 0; i < n; i++)
+		{
+			truth.emplace_back(0.05 * static_cast<double>(i), 0, 0);
+			odometry.emplace_back(0.0525 * static_cast<double>(i), 0, 0);
+			in.increments.emplace_back(i ? 0.0525 : 0, 0, 0);
+			in.covariances.push_back(cov);
+			baseline::Contact side, ahead;
+			side.p = {0, 0.3}, side.normal = -M_PI / 2, side.shaft = {0, 1}, side.sigma_r = 0.002;
+			ahead.p = {2.4 - truth.back()[0], 0}, ahead.normal = M_PI, ahead.shaft = {1, 0}, ahead.sigma_r = 0.002;
+			side.sweep = ahead.sweep = static_cast<uint32_t>(i);
+			in.contacts.push_back(side), in.contacts.push_back(ahead);
+		}
+		in.path = odometry;  // the estimate to start from: dead reckoning
+		in.solids = {
+			world::Obstacle::rectangle({1.2, 0.35}, 0, 1.5, 0.05, 0.5),  // side wall, face y = 0.3
+			world::Obstacle::rectangle({2.45 + 0.1, 0}, M_PI / 2, 1, 0.05, 0.5)};  // end wall as mapped: 10 cm off
+	}
+
+	static double worst(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b)
+	{
+		double w = 0;
+		for (size_t i = 0; i < a.size(); i++) w = std::max(w, (a[i].head<2>() - b[i].head<2>()).norm());
+		return w;
+	}
+};
+}  // namespace
+
+TEST(PathSmoother, ContactsOnMappedSolidsCorrectABiasedOdometry)
+{
+	Corridor c;
+	smooth::TSmoothParams p;
+	p.gate = 0.15;  // the end wall is mapped 10 cm off and the odometry drifts 10 cm
+	const auto r = PathSmoother::run(c.in, p);
+	ASSERT_EQ(r.path.size(), c.truth.size());
+	EXPECT_EQ(r.tied, c.in.contacts.size());
+	EXPECT_NEAR(Corridor::worst(c.odometry, c.truth), 0.1, 1e-9);
+	// The distances to the end wall fix every step; the start is known; the wall moves to fit.
+	EXPECT_LT(Corridor::worst(r.path, c.truth), 0.002);
+	EXPECT_EQ(r.path[0], c.in.path[0]);  // the known start is not moved
+	ASSERT_EQ(r.shifts.size(), 2u);
+	EXPECT_NEAR(r.shifts[1].x(), -0.1, 0.002);
+	EXPECT_LT(r.costAfter, r.costBefore / 100);
+	EXPECT_GT(r.iterations, 0u);
+}
+
+TEST(PathSmoother, WithoutTiesItFollowsTheOdometry)
+{
+	// No solid near any contact: only the odometry speaks, and the most probable path is the
+	// odometry's, whatever path the smoother starts from (a filter's random walk, here).
+	Corridor c;
+	c.in.solids.clear();
+	std::mt19937 rng(3);
+	std::normal_distribution<double> step(0, 0.01);
+	for (size_t i = 1; i < c.in.path.size(); i++)
+		c.in.path[i] = c.in.path[i - 1] + Eigen::Vector3d(0.0525 + step(rng), step(rng), step(rng) / 5);
+	ASSERT_GT(Corridor::worst(c.in.path, c.odometry), 0.02);
+	const auto r = PathSmoother::run(c.in, smooth::TSmoothParams());
+	EXPECT_EQ(r.tied, 0u);
+	EXPECT_LT(Corridor::worst(r.path, c.odometry), 1e-6);
+}
+
+TEST(PathSmoother, AContactNearNoMappedFaceIsLeftOut)
+{
+	// Every tenth sweep also touches something unmapped 30 cm before the end wall: beyond the
+	// gate of every face, so it ties to nothing and moves nothing.
+	Corridor c;
+	const size_t n = c.in.contacts.size();
+	for (size_t i = 1; i < n; i += 20)
+	{
+		auto stray = c.in.contacts[i];
+		stray.p.x() -= 0.3;
+		c.in.contacts.push_back(stray);
+	}
+	smooth::TSmoothParams p;
+	p.gate = 0.15;
+	const auto r = PathSmoother::run(c.in, p);
+	EXPECT_EQ(r.tied, n);
+	EXPECT_LT(Corridor::worst(r.path, c.truth), 0.002);
+}
+
+TEST(PathSmoother, RejectsInconsistentInput)
+{
+	Corridor c;
+	c.in.covariances.pop_back();
+	EXPECT_THROW(PathSmoother::run(c.in, smooth::TSmoothParams()), core::Error);
+	Corridor d;
+	d.in.contacts[3].sweep = 41;
+	EXPECT_THROW(PathSmoother::run(d.in, smooth::TSmoothParams()), core::Error);
+	Corridor e;
+	e.in.path.clear(), e.in.increments.clear(), e.in.covariances.clear(), e.in.contacts.clear();
+	EXPECT_THROW(PathSmoother::run(e.in, smooth::TSmoothParams()), core::Error);
+}

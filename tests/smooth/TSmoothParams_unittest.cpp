@@ -1,0 +1,67 @@
+#include <gtest/gtest.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/smooth/TSmoothParams.h>
+
+#include "../TempDirTest.h"
+
+#include <cmath>
+#include <fstream>
+
+using namespace whiskermap;
+
+namespace
+{
+class TSmoothParamsTest : public test::TempDirTest
+{
+   protected:
+	std::string ini(const std::string& text)
+	{
+		const std::string p = path("s.ini");
+		std::ofstream(p) << text;
+		return p;
+	}
+};
+}  // namespace
+
+TEST_F(TSmoothParamsTest, DefaultsWithoutTheSectionAndEveryKeyRead)
+{
+	const auto d = smooth::TSmoothParams::load(ini("[slam]\nparticles = 3\n"));
+	EXPECT_TRUE(d.enabled);
+	EXPECT_EQ(d.passes, smooth::TSmoothParams().passes);
+	const auto p = smooth::TSmoothParams::load(ini(
+		"[smooth]\nenabled = false\ngate = 0.1\nnormal_gate_deg = 30\nposition_floor = 0.003\nhuber = 1.5\n"
+		"solid_sigma = 2\nrounds = 3\niterations = 7\npasses = 2\n"));
+	EXPECT_FALSE(p.enabled);
+	EXPECT_DOUBLE_EQ(p.gate, 0.1);
+	EXPECT_NEAR(p.normal_gate, M_PI / 6, 1e-12);
+	EXPECT_DOUBLE_EQ(p.position_floor, 0.003);
+	EXPECT_DOUBLE_EQ(p.huber, 1.5);
+	EXPECT_DOUBLE_EQ(p.solid_sigma, 2);
+	EXPECT_EQ(p.rounds, 3u);
+	EXPECT_EQ(p.iterations, 7u);
+	EXPECT_EQ(p.passes, 2u);
+}
+
+TEST_F(TSmoothParamsTest, BadValuesAndUnknownKeysNameTheFileAndKey)
+{
+	try
+	{
+		smooth::TSmoothParams::load(ini("[smooth]\ngate = -1\n"));
+		FAIL() << "no error";
+	}
+	catch (const core::Error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("s.ini: line 2: [smooth] gate"), std::string::npos) << e.what();
+	}
+	try
+	{
+		smooth::TSmoothParams::load(ini("[smooth]\ngates = 0.1\n"));
+		FAIL() << "no error";
+	}
+	catch (const core::Error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("[smooth] gates: unknown key"), std::string::npos) << e.what();
+	}
+	EXPECT_THROW(smooth::TSmoothParams::load(ini("[smooth]\npasses = 0\n")), core::Error);
+	EXPECT_THROW(smooth::TSmoothParams::load(path("missing.ini")), core::Error);
+}
