@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # whisker-slam over many filter seeds on a shipped SLAM log (doc/slam.md, doc/benchmarks.md):
-# per seed the raw and aligned ATE, final error, map F1, mean ms per step and resamplings,
-# then the median and worst over the seeds and how many beat the odometry alone.
+# per seed the raw and aligned ATE, final error, map F1, mean ms per step and resamplings, and
+# the best particle's raw ATE before smoothing; then the median and worst over the seeds and
+# how many beat the odometry alone.
 # Usage: scripts/bench-slam-seeds.sh [BUILD_DIR] [WORK_DIR]
 #   CONFIG=FILE.ini  the whisker-slam config (default config/whisker-slam.ini)
 #   LOG=paper_arena|random_yaw1   the datasets/slam/ log (obs layout; default paper_arena)
@@ -34,11 +35,14 @@ for s in seeds:
     S = json.load(open(f"{work}/seed{s}/summary.json"))
     M = json.load(open(f"{work}/seed{s}/metrics.json"))
     e, o = S["estimated"]["trajectory"], S["odometry"]["trajectory"]
-    rows.append((e["ate_rmse_m"], e["aligned_rmse_m"], e["final_error_m"], M["f1"], S["time_per_step_ms"]["mean"], S["resamplings"], o["ate_rmse_m"]))
+    f = S["filter"]["trajectory"] if "filter" in S else e  # before 2026-12-05: no smoothing
+    rows.append((e["ate_rmse_m"], e["aligned_rmse_m"], e["final_error_m"], M["f1"], S["time_per_step_ms"]["mean"], S["resamplings"], o["ate_rmse_m"], f["ate_rmse_m"], M["rmse_m"]))
     print(f"seed {s}: ATE raw {e['ate_rmse_m']:.3f} m, aligned {e['aligned_rmse_m']:.3f} m, final {e['final_error_m']:.3f} m; "
-          f"map F1 {M['f1']:.2f}; {S['time_per_step_ms']['mean']:.0f} ms per step (mean); {S['resamplings']} resamplings")
+          f"map F1 {M['f1']:.2f}, centre RMSE {M['rmse_m']:.3f} m; {S['time_per_step_ms']['mean']:.0f} ms per step (mean); "
+          f"{S['resamplings']} resamplings; best particle ATE raw {f['ate_rmse_m']:.3f} m")
 med = lambda k: statistics.median(r[k] for r in rows)
 print(f"median over {len(rows)} seeds: ATE raw {med(0):.3f} m (worst {max(r[0] for r in rows):.3f}), aligned {med(1):.3f} m, "
-      f"final {med(2):.3f} m, map F1 {med(3):.2f}, {med(4):.0f} ms per step (mean); "
+      f"final {med(2):.3f} m, map F1 {med(3):.2f} (worst {min(r[3] for r in rows):.2f}), centre RMSE {med(8):.3f} m, "
+      f"{med(4):.0f} ms per step (mean); best particle ATE raw {med(7):.3f} m (worst {max(r[7] for r in rows):.3f}); "
       f"better than the odometry ({rows[0][6]:.3f} m) on {sum(r[0] < r[6] for r in rows)} of {len(rows)}")
 PY

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# check_slam_bad_input.sh WHISKER_SLAM SRC_DIR WORK_DIR: a missing rawlog, a bad config key,
+# check_slam_bad_input.sh WHISKER_SLAM SRC_DIR WORK_DIR: a missing rawlog, a bad config key (in
+# [slam] or [smooth]),
 # --particles 0, a truth file shorter than the run: one error line, non-zero exit, and the
 # output folder left exactly as it was.
 set -euo pipefail
@@ -13,6 +14,10 @@ printf '[slam]\nparticles = 10\nparticle = 3\n' > "$work/bad_key.ini"
 "$expect_error" "bad_key.ini: line 3: \[slam\] particle: unknown key" "$slam" -i "$data" -c "$work/bad_key.ini" -o "$work/out"
 printf '[slam]\nparticles = 10\nresampling = best\n' > "$work/bad_method.ini"
 "$expect_error" "bad_method.ini: line 3: \[slam\] resampling: 'best' is not one of" "$slam" -i "$data" -c "$work/bad_method.ini" -o "$work/out"
+printf '[slam]\nparticles = 10\n[smooth]\ngate = 0.05\nrond = 3\n' > "$work/bad_smooth.ini"
+"$expect_error" "bad_smooth.ini: line 5: \[smooth\] rond: unknown key" "$slam" -i "$data" -c "$work/bad_smooth.ini" -o "$work/out"
+printf '[slam]\nparticles = 10\n[smooth]\npasses = 0\n' > "$work/bad_passes.ini"
+"$expect_error" "bad_passes.ini: line 4: \[smooth\] passes" "$slam" -i "$data" -c "$work/bad_passes.ini" -o "$work/out"
 printf '[slam]\nparticles = 0\n' > "$work/zero.ini"
 "$expect_error" "zero.ini: line 2: \[slam\] particles" "$slam" -i "$data" -c "$work/zero.ini" -o "$work/out"
 "$expect_error" "--particles 0: the filter needs at least one particle" "$slam" -i "$data" --particles 0 -o "$work/out"

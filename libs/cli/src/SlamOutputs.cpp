@@ -18,7 +18,7 @@ namespace whiskermap::cli
 namespace
 {
 using mrpt::img::TColor;
-const TColor TRUTH(0, 0, 200), ESTIMATE(200, 40, 40), ODOMETRY(230, 140, 0), MAP(120, 120, 120);
+const TColor TRUTH(0, 0, 200), ESTIMATE(200, 40, 40), FILTER(240, 150, 190), ODOMETRY(230, 140, 0), MAP(120, 120, 120);
 
 /** The first `n` poses of a path file, an even subset of at most 20,000 (the picture's). */
 std::vector<mrpt::poses::CPose2D> picturePoses(const std::string& file, size_t n)
@@ -53,16 +53,17 @@ void drawPaths(OutputDir& out, const SlamOutputs::TRun& run, const MapOutputs::T
 	for (const auto& t : run.mapTables) img.table(t, MAP, 2);
 	img.path(picturePoses(run.odometryFile, run.sweeps), ODOMETRY, 1);
 	if (!run.truthPath.empty()) img.path(picturePoses(run.truthPath, run.sweeps), TRUTH, 1);
+	if (run.smoothing) img.path(picturePoses(run.filterFile, run.sweeps), FILTER, 1);
 	img.path(picturePoses(run.estimatedFile, run.sweeps), ESTIMATE, 2);
 	img.caption(std::filesystem::path(run.input).filename().string() + ": paths and the best particle's map");
-	img.caption(std::string("SLAM (red), odometry (orange)") + (run.truthPath.empty() ? "" : ", truth (blue)") +
+	img.caption(std::string(run.smoothing ? "SLAM smoothed (red), best particle (pink)" : "SLAM (red)") + ", odometry (orange)" + (run.truthPath.empty() ? "" : ", truth (blue)") +
 				", map (grey)" + (s.world ? ", true tables" : ""));
 	img.save(out.path("paths.png"));
 }
 
 struct Scores
 {
-	eval::TrajectoryEvaluation estimated, odometry;
+	eval::TrajectoryEvaluation estimated, odometry, filter;
 };
 
 void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const std::optional<Scores>& scores)
@@ -84,12 +85,19 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 	j["ess"] = std::move(ess);
 	j["path_poses_max"] = st.pathPosesMax;
 	j["map_tables"] = run.mapTables.size();
-	j["map_matches_best_particle"] = run.mapMatches;
+	j["map_matches_best_particle"] = run.mapMatches ? nlohmann::json(*run.mapMatches) : nlohmann::json();  // null: smoothed
+	if (const auto* sm = run.smoothing)
+		j["smoothing"] = {
+			{"contacts_tied", sm->tied}, {"cost_before", sm->costBefore}, {"cost_after", sm->costAfter},
+			{"rounds", sm->rounds}, {"iterations", sm->iterations}, {"seconds", run.smoothingSeconds}};
+	else
+		j["smoothing"] = nullptr;
 	if (scores)
 	{
 		j["truth"] = run.truthPath;
 		j["estimated"] = trajectoryJson(scores->estimated);
 		j["odometry"] = trajectoryJson(scores->odometry);
+		j["filter"] = trajectoryJson(scores->filter);
 	}
 	j["wall_time_s"] = run.wallSeconds;
 	j["peak_rss_mb"] = core::peakRssMb();
@@ -111,7 +119,8 @@ std::string SlamOutputs::write(OutputDir& out, const TRun& run, const MapOutputs
 		const eval::EvalOptions o;
 		scores = Scores{
 			eval::TrajectoryEvaluation::compute(run.estimatedFile, run.truthPath, o, run.sweeps),
-			eval::TrajectoryEvaluation::compute(run.odometryFile, run.truthPath, o, run.sweeps)};
+			eval::TrajectoryEvaluation::compute(run.odometryFile, run.truthPath, o, run.sweeps),
+			eval::TrajectoryEvaluation::compute(run.filterFile, run.truthPath, o, run.sweeps)};
 	}
 	drawPaths(out, run, picture);
 	writeSummary(out.path("summary.json"), run, scores);
@@ -122,8 +131,8 @@ std::string SlamOutputs::write(OutputDir& out, const TRun& run, const MapOutputs
 	if (scores)
 	{
 		const auto &e = scores->estimated, &d = scores->odometry;
-		std::snprintf(line, sizeof(line), "; ATE RMSE %.3f m (aligned %.3f), odometry %.3f m (aligned %.3f)",
-					  e.ate_rmse_m, e.aligned_rmse_m, d.ate_rmse_m, d.aligned_rmse_m);
+		std::snprintf(line, sizeof(line), "; ATE RMSE %.3f m (aligned %.3f; best particle %.3f), odometry %.3f m (aligned %.3f)",
+					  e.ate_rmse_m, e.aligned_rmse_m, scores->filter.ate_rmse_m, d.ate_rmse_m, d.aligned_rmse_m);
 		text += line;
 	}
 	return text;

@@ -6,6 +6,7 @@
 #include <whiskermap/cli/OutputDir.h>
 #include <whiskermap/cli/PoseSpool.h>
 #include <whiskermap/cli/SlamOutputs.h>
+#include <whiskermap/cli/SlamSmoothing.h>
 #include <whiskermap/cli/WhiskerSlamApp.h>
 #include <whiskermap/cli/runApp.h>
 #include <whiskermap/core/ConfigPaths.h>
@@ -86,6 +87,7 @@ int run(Options& o)
 	// Everything that can be wrong with the inputs is checked before any output is made.
 	if (o.config.empty()) o.config = core::ConfigPaths::find("whisker-slam.ini");
 	auto params = slam::TSlamParams::load(o.config);
+	const auto smoothing = smooth::TSmoothParams::load(o.config);
 	if (o.particles && *o.particles == 0) throw core::Error("--particles 0: the filter needs at least one particle");
 	if (o.particles) params.particles = *o.particles;
 	if (o.seed) params.seed = *o.seed;
@@ -151,29 +153,49 @@ int run(Options& o)
 	result.filterHeapMb = core::heapInUseMb();
 	odometry.close();
 	for (const auto& p : slam.bestPath()) settled(p);
+	std::optional<smooth::PathSmoother::TResult> smoothed;
+	if (smoothing.enabled)
+	{
+		const auto ts = std::chrono::steady_clock::now();
+		std::vector<Eigen::Vector3d> path;
+		estimated.rewind();
+		double t;
+		for (mrpt::math::TPose2D p; path.size() < n && estimated.next(t, p);) path.emplace_back(p.x, p.y, p.phi);
+		smoothed = SlamSmoothing(o.input, n, params).run(std::move(path), slam.bestMap().mappedSolids(), smoothing, inits);
+		result.smoothing = &*smoothed;
+		result.smoothingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count();
+	}
 
-	// The best particle's map, rebuilt by whisker-map's runner and writer at the best path's
-	// poses (the same insertions the particle made, so the same map: checked below).
+	// The map, rebuilt by whisker-map's runner and writer at the estimated path's poses: the
+	// smoothed path's, or without smoothing the best particle's (then the same insertions the
+	// particle made, so the same map: checked below).
 	mrpt::maps::CMultiMetricMap multimap(inits);
 	auto map = multimap.mapByClass<maps::CHierarchicalObjectMap>();
 	MapOutputs outputs(out, *map, settings);
 	MapRunner runner(multimap, *map, 1, [&](size_t i, const Sweep& sw, double ms) { outputs.onStep(i, sw, ms); });
+	result.filterFile = out.path(SlamOutputs::FILTER);
 	world::PathLog::Writer estimatedText(result.estimatedFile, SlamOutputs::ESTIMATED_TITLE);
+	world::PathLog::Writer filterText(result.filterFile, SlamOutputs::FILTER_TITLE);
 	estimated.rewind();
 	k = 0;
 	obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
 		double t;
 		mrpt::math::TPose2D pose;
-		if (k++ >= n || !estimated.next(t, pose)) return;
-		estimatedText.write(t, mrpt::poses::CPose2D(pose));
-		runner.add({mrpt::poses::CPose2D(pose), sw.obs});
+		if (k >= n || !estimated.next(t, pose)) return;
+		filterText.write(t, mrpt::poses::CPose2D(pose));
+		const auto& s = smoothed ? smoothed->path[k] : Eigen::Vector3d(pose.x, pose.y, pose.phi);
+		const mrpt::poses::CPose2D at(s[0], s[1], s[2]);
+		estimatedText.write(t, at);
+		runner.add({at, sw.obs});
+		k++;
 	});
 	runner.flush();
 	estimatedText.close();
-	result.mapMatches = sameTables(map->mapTables(), slam.bestMap().mapTables());
+	filterText.close();
+	if (!smoothed) result.mapMatches = sameTables(map->mapTables(), slam.bestMap().mapTables());
 	map->annealPending();  // the last sweeps of a batch (batch_sweeps): the particle's own map has them pending
 	result.mapTables = map->mapTables();
-	if (!result.mapMatches && !o.quiet)
+	if (result.mapMatches == false && !o.quiet)
 		std::fprintf(stderr, "whisker-slam: warning: the map written (rebuilt at the best path) differs from the best "
 							 "particle's own map (summary.json: map_matches_best_particle; doc/slam.md)\n");
 	result.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -89,10 +89,7 @@ const RbpfSlam::TStep& RbpfSlam::step(const obs::RawlogReader::Sweep& sweep)
 	}
 	const mrpt::poses::CPose2D increment = sweep.robotPose - (m_lastOdometry ? *m_lastOdometry : sweep.robotPose);
 	m_lastOdometry = sweep.robotPose;
-	auto model = m_params.motion.motionModel(increment);
-	auto& g = model.gaussianModel;
-	g.a1 *= m_params.motion_noise_scale, g.a2 *= m_params.motion_noise_scale;
-	g.a3 *= m_params.motion_noise_scale, g.a4 *= m_params.motion_noise_scale;
+	const auto model = m_params.motionModel(increment);
 	// The increment as CMetricMapBuilderRBPF accumulates it (composed onto a zero CPose3D),
 	// so that the draws are the builder's to the last bit.
 	mrpt::poses::CPose3D accumulated;

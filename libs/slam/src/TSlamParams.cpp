@@ -21,11 +21,20 @@ std::string besideIni(const std::string& ini, const std::string& value)
 }
 }  // namespace
 
+mrpt::obs::CActionRobotMovement2D::TMotionModelOptions TSlamParams::motionModel(const mrpt::poses::CPose2D& increment) const
+{
+	auto model = motion.motionModel(increment);
+	auto& g = model.gaussianModel;
+	g.a1 *= motion_noise_scale, g.a2 *= motion_noise_scale;
+	g.a3 *= motion_noise_scale, g.a4 *= motion_noise_scale;
+	return model;
+}
+
 TSlamParams TSlamParams::load(const std::string& path)
 {
 	using PF = mrpt::bayes::CParticleFilter;
 	const auto file = core::openIniFile(path, "slam config file");
-	core::rejectUnknownSections(*file, {"slam"}, "", path);
+	core::rejectUnknownSections(*file, {"slam", "smooth"}, "", path);  // [smooth]: smooth::TSmoothParams
 	core::IniSection sec(*file, "slam", path);
 	TSlamParams p;
 	p.particles = static_cast<unsigned>(sec.integer("particles", p.particles, 1, 100000));

@@ -3,8 +3,10 @@
 #include <whiskermap/cli/OutputDir.h>
 #include <whiskermap/cli/StepFigures.h>
 #include <whiskermap/slam/TSlamParams.h>
+#include <whiskermap/smooth/PathSmoother.h>
 #include <whiskermap/world/Table.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,7 +21,10 @@ namespace whiskermap::cli
 struct SlamOutputs
 {
 	static constexpr const char* ESTIMATED = "estimated_path.txt";
-	static constexpr const char* ESTIMATED_TITLE = "whisker-slam: the best particle's path, one pose per sweep";
+	static constexpr const char* ESTIMATED_TITLE =
+		"whisker-slam: the estimated path (the best particle's, smoothed), one pose per sweep";
+	static constexpr const char* FILTER = "filter_path.txt";
+	static constexpr const char* FILTER_TITLE = "whisker-slam: the best particle's path, one pose per sweep";
 	static constexpr const char* ODOMETRY = "odometry_path.txt";
 	static constexpr const char* ODOMETRY_TITLE = "whisker-slam: the odometry of each sweep, as read from the rawlog";
 
@@ -28,10 +33,14 @@ struct SlamOutputs
 		std::string input, config, mapConfig, truthPath;  ///< truthPath empty: no truth
 		const slam::TSlamParams* params = nullptr;
 		size_t sweeps = 0;  ///< lines in each path file (the truth file's first `sweeps` are scored)
-		std::string estimatedFile, odometryFile;  ///< the path files, written (staged)
+		std::string estimatedFile, odometryFile, filterFile;  ///< the path files, written (staged)
 		StepFigures steps;
 		std::vector<world::Table> mapTables;  ///< the best particle's map
-		bool mapMatches = false;  ///< the rebuilt map equals the best particle's map
+		/** Without smoothing: the rebuilt map equals the best particle's map (with smoothing the
+		 *  map is rebuilt at other poses: nothing to compare). */
+		std::optional<bool> mapMatches;
+		const smooth::PathSmoother::TResult* smoothing = nullptr;  ///< null: not smoothed
+		double smoothingSeconds = 0;
 		double wallSeconds = 0;
 		/** The process's peak resident memory (MB) after the first tenth of the filter's steps
 		 *  and after its last step, before the outputs are made: the filter's growth. */

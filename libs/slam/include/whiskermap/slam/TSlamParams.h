@@ -32,6 +32,10 @@ struct TSlamParams
 	mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling =
 		mrpt::bayes::CParticleFilter::prSystematic;
 
+	/** The motion model of one odometry increment: `motion`'s matched Gaussian model with its
+	 *  a1..a4 times motion_noise_scale (what moves the particles). */
+	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motionModel(const mrpt::poses::CPose2D& increment) const;
+
 	/** Reads `path`. Relative `map_config` and `odometry_model` files are looked up next to
 	 *  it first, then as shipped presets (config/, config/odometry/). */
 	static TSlamParams load(const std::string& path);

@@ -1,0 +1,58 @@
+#include <mrpt/maps/CMultiMetricMap.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <whiskermap/baseline/Contact.h>
+#include <whiskermap/cli/MapRunner.h>
+#include <whiskermap/cli/SlamSmoothing.h>
+#include <whiskermap/core/Error.h>
+#include <whiskermap/obs/RawlogReader.h>
+
+namespace whiskermap::cli
+{
+SlamSmoothing::SlamSmoothing(const std::string& rawlog, size_t sweeps, const slam::TSlamParams& slam) : m_rawlog(rawlog)
+{
+	auto& in = m_input;
+	std::optional<mrpt::poses::CPose2D> last;
+	obs::RawlogReader::forEach(rawlog, [&](const obs::RawlogReader::Sweep& sw) {
+		const size_t i = in.increments.size();
+		if (i >= sweeps) return;
+		const mrpt::poses::CPose2D u = sw.robotPose - (last ? *last : sw.robotPose);
+		last = sw.robotPose;
+		mrpt::obs::CActionRobotMovement2D move;
+		move.computeFromOdometry(u, slam.motionModel(u));
+		in.increments.emplace_back(u.x(), u.y(), u.phi());
+		in.covariances.push_back(move.poseChange->getCovariance().asEigen());
+		const auto contacts = baseline::Contact::of({mrpt::poses::CPose2D(), sw.obs}, static_cast<uint32_t>(i));  // robot frame
+		in.contacts.insert(in.contacts.end(), contacts.begin(), contacts.end());
+	});
+}
+
+smooth::PathSmoother::TResult SlamSmoothing::run(
+	std::vector<Eigen::Vector3d> path, std::vector<world::Obstacle> solids, const smooth::TSmoothParams& params,
+	const mrpt::maps::TSetOfMetricMapInitializers& maps) const
+{
+	auto in = m_input;
+	in.path = std::move(path), in.solids = std::move(solids);
+	auto result = smooth::PathSmoother::run(in, params);
+	for (unsigned pass = 1; pass < params.passes; pass++)
+	{
+		mrpt::maps::CMultiMetricMap multimap(maps);
+		auto map = multimap.mapByClass<maps::CHierarchicalObjectMap>();
+		if (!map) throw core::Error("whisker-slam: the map config holds no hierarchicalObjectMap");
+		MapRunner runner(multimap, *map, 1, [](size_t, const obs::RawlogReader::Sweep&, double) {});
+		size_t k = 0;
+		obs::RawlogReader::forEach(m_rawlog, [&](const obs::RawlogReader::Sweep& sw) {
+			if (k >= result.path.size()) return;
+			const auto& x = result.path[k++];
+			runner.add({mrpt::poses::CPose2D(x[0], x[1], x[2]), sw.obs});
+		});
+		runner.flush();
+		map->annealPending();
+		in.path = result.path, in.solids = map->mappedSolids();
+		const auto before = result;
+		result = smooth::PathSmoother::run(in, params);
+		result.costBefore = before.costBefore;  // at the particle's path
+		result.rounds += before.rounds, result.iterations += before.iterations;
+	}
+	return result;
+}
+}  // namespace whiskermap::cli
