@@ -213,9 +213,11 @@ int WhiskerSlamApp::main(int argc, char** argv)
 		"whisker-slam: tactile SLAM. Runs MRPT's Rao-Blackwellised particle filter "
 		"(CMultiMetricMapPDF) on a rawlog (either layout), each particle holding a "
 		"hierarchicalObjectMap; the particles move with the odometry's motion model and are "
-		"weighed by the sweep likelihood. Writes, in OUTDIR: estimated_path.txt (the best "
-		"particle's path) and odometry_path.txt, one line per sweep in the ground-truth "
-		"columns; that particle's map as whisker-map writes it (map_tables.csv, map_candidates.csv, "
+		"weighed by the sweep likelihood; then the best particle's path is smoothed by least squares "
+		"against its map ([smooth] in the config). Writes, in OUTDIR: estimated_path.txt (the smoothed "
+		"path), filter_path.txt (the best particle's) and odometry_path.txt, one line per sweep in the "
+		"ground-truth columns; the map built at the estimated path as whisker-map writes it (map_tables.csv, "
+		"map_candidates.csv, map_walls.csv, "
 		"map.png, map.3Dscene, map.bt, map_summary.json, with --world metrics.json); paths.png; "
 		"summary.json (doc/slam.md)."};
 	Options o;
@@ -223,8 +225,8 @@ int WhiskerSlamApp::main(int argc, char** argv)
 	app.add_option("-o,--out", o.outdir, "Output folder (created; files in it are replaced only when the run succeeds)")
 		->required();
 	app.add_option("-c,--config", o.config,
-				   "whisker-slam .ini: particles, seed, map config, motion model, resampling (default: the "
-				   "shipped config/whisker-slam.ini)");
+				   "whisker-slam .ini: particles, seed, map config, motion model, resampling, smoothing "
+				   "(default: the shipped config/whisker-slam.ini)");
 	app.add_option("--particles", o.particles, "Particle count (overrides [slam] particles)");
 	app.add_option("--seed", o.seed, "Seed of MRPT's random generator (overrides [slam] seed); same seed, same output");
 	app.add_option("--truth", o.truth,
