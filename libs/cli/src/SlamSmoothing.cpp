@@ -8,22 +8,18 @@
 
 namespace whiskermap::cli
 {
-SlamSmoothing::SlamSmoothing(const std::string& rawlog, size_t sweeps, const slam::TSlamParams& slam) : m_rawlog(rawlog)
+void SlamSmoothing::add(const obs::RawlogReader::Sweep& sw)
 {
 	auto& in = m_input;
-	std::optional<mrpt::poses::CPose2D> last;
-	obs::RawlogReader::forEach(rawlog, [&](const obs::RawlogReader::Sweep& sw) {
-		const size_t i = in.increments.size();
-		if (i >= sweeps) return;
-		const mrpt::poses::CPose2D u = sw.robotPose - (last ? *last : sw.robotPose);
-		last = sw.robotPose;
-		mrpt::obs::CActionRobotMovement2D move;
-		move.computeFromOdometry(u, slam.motionModel(u));
-		in.increments.emplace_back(u.x(), u.y(), u.phi());
-		in.covariances.push_back(move.poseChange->getCovariance().asEigen());
-		const auto contacts = baseline::Contact::of({mrpt::poses::CPose2D(), sw.obs}, static_cast<uint32_t>(i));  // robot frame
-		in.contacts.insert(in.contacts.end(), contacts.begin(), contacts.end());
-	});
+	const mrpt::poses::CPose2D u = sw.robotPose - (m_last ? *m_last : sw.robotPose);
+	m_last = sw.robotPose;
+	mrpt::obs::CActionRobotMovement2D move;
+	move.computeFromOdometry(u, m_slam.motionModel(u));
+	const auto i = static_cast<uint32_t>(in.increments.size());
+	in.increments.emplace_back(u.x(), u.y(), u.phi());
+	in.covariances.push_back(move.poseChange->getCovariance().asEigen());
+	const auto contacts = baseline::Contact::of({mrpt::poses::CPose2D(), sw.obs}, i);  // robot frame
+	in.contacts.insert(in.contacts.end(), contacts.begin(), contacts.end());
 }
 
 smooth::PathSmoother::TResult SlamSmoothing::run(

@@ -132,6 +132,8 @@ int run(Options& o)
 		estimated.write(times.front(), p.asTPose());
 		times.pop_front();
 	};
+	std::optional<SlamSmoothing> smoother;
+	if (smoothing.enabled) smoother.emplace(o.input, params);
 	const bool bar = !o.quiet && ::isatty(STDERR_FILENO);
 	size_t k = 0;
 	obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
@@ -139,6 +141,7 @@ int run(Options& o)
 		const double t = mrpt::Clock::toDouble(sw.obs->timestamp);
 		odometry.write(t, sw.robotPose);
 		times.push_back(t);
+		if (smoother) smoother->add(sw);
 		const auto& step = slam.step(sw);
 		slam.settle(settled);
 		result.steps.add(step.ms, step.ess, step.resampled, slam.paths().nodes());
@@ -154,14 +157,14 @@ int run(Options& o)
 	odometry.close();
 	for (const auto& p : slam.bestPath()) settled(p);
 	std::optional<smooth::PathSmoother::TResult> smoothed;
-	if (smoothing.enabled)
+	if (smoother)
 	{
 		const auto ts = std::chrono::steady_clock::now();
 		std::vector<Eigen::Vector3d> path;
 		estimated.rewind();
 		double t;
 		for (mrpt::math::TPose2D p; path.size() < n && estimated.next(t, p);) path.emplace_back(p.x, p.y, p.phi);
-		smoothed = SlamSmoothing(o.input, n, params).run(std::move(path), slam.bestMap().mappedSolids(), smoothing, inits);
+		smoothed = smoother->run(std::move(path), slam.bestMap().mappedSolids(), smoothing, inits);
 		result.smoothing = &*smoothed;
 		result.smoothingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count();
 	}
