@@ -2,6 +2,7 @@
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/smooth/ContactFactor.h>
 #include <whiskermap/smooth/OdometryFactor.h>
+#include <whiskermap/smooth/SameLegFactor.h>
 
 #include <Eigen/Geometry>
 
@@ -65,6 +66,14 @@ TEST(OdometryFactor, JacobiansMatchCentralDifferences)
 	EXPECT_LT((Jb - nb).cwiseAbs().maxCoeff(), 1e-4 * Jb.cwiseAbs().maxCoeff());
 }
 
+TEST(SameLegFactor, ZeroWhenTheShiftedCentresCoincide)
+{
+	const smooth::SameLegFactor f{0, 1, Eigen::Vector2d(0.1, -0.05), 0.005};  // c_a - c_b
+	EXPECT_GT(f.residual(Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()).norm(), 20);
+	EXPECT_LT(f.residual(Eigen::Vector2d(-0.04, 0.02), Eigen::Vector2d(0.06, -0.03)).norm(), 1e-12);  // eq. S4
+	EXPECT_NEAR(f.residual(Eigen::Vector2d(0.005, 0), Eigen::Vector2d(0.1, -0.05))[0], 1, 1e-12);  // one std-dev
+}
+
 TEST(ContactFactor, TiesAContactToTheFaceItTouches)
 {
 	// A 5 cm square leg at (1, 0), and a wall slab along y at x = 2 (its face at 1.95).
@@ -83,12 +92,14 @@ TEST(ContactFactor, TiesAContactToTheFaceItTouches)
 	ASSERT_TRUE(f);
 	EXPECT_EQ(f->pose, 7u);
 	EXPECT_EQ(f->group, 0u);
+	EXPECT_EQ(f->solid, 0u);
 	EXPECT_NEAR(f->n.x(), -1, 1e-12);
 	EXPECT_NEAR(f->residual(pose, shifts[0]) * f->sigma, 0.001, 1e-9);
 	// The wall's face towards the robot (x = 1.95, normal -x).
 	f = ContactFactor::associate(robotFrame({1.96, 0.5}, M_PI), 0, pose, solids, groups, shifts, 0.04, 0.8, 0.002);
 	ASSERT_TRUE(f);
 	EXPECT_EQ(f->group, 1u);
+	EXPECT_EQ(f->solid, 1u);
 	EXPECT_NEAR(f->residual(pose, shifts[1]) * f->sigma, -0.01, 1e-9);
 	// Too far from every face, or a normal the face cannot have: no tie.
 	EXPECT_FALSE(ContactFactor::associate(robotFrame({1.5, 0}, M_PI), 0, pose, solids, groups, shifts, 0.04, 0.8, 0.002));

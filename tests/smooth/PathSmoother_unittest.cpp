@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/smooth/PathSmoother.h>
+#include <whiskermap/world/Table.h>
 
 #include <Eigen/Geometry>
 #include <random>
@@ -114,4 +115,35 @@ TEST(PathSmoother, RejectsInconsistentInput)
 	Corridor e;
 	e.in.path.clear(), e.in.increments.clear(), e.in.covariances.clear(), e.in.contacts.clear();
 	EXPECT_THROW(PathSmoother::run(e.in, smooth::TSmoothParams()), core::Error);
+}
+
+TEST(PathSmoother, ALegMappedTwiceIsHeldToOnePlace)
+{
+	// The corridor with exact odometry, but a blind step in the middle (1 m std-dev: the
+	// robot was lifted), and the end wall replaced by a table leg whose face is at x = 2.4.
+	// The particle drifted 3 cm along x across the blind step and mapped the leg a second
+	// time, 3 cm further (a second table). Left alone, the copy's shift and the second half
+	// of the path share the 3 cm; held to the first copy (eq. S4), the path is the truth.
+	Corridor c;
+	for (size_t i = 1; i < c.truth.size(); i++) c.in.increments[i] = {0.05, 0, 0};
+	c.in.covariances[21] = Eigen::Matrix3d::Identity();
+	for (size_t i = 0; i < c.truth.size(); i++) c.in.path[i] = c.truth[i] + Eigen::Vector3d(i > 20 ? 0.03 : 0, 0, 0);
+	c.in.solids.pop_back();
+	world::Table t;
+	t.x = 2.925, t.y = 0.3, t.length = 1, t.width = 0.6, t.leg_width = 0.05;  // leg 2 at (2.425, 0)
+	for (int k = 0; k < 4; k++) c.in.solids.push_back(t.leg(k, 0));
+	t.x += 0.03;
+	for (int k = 0; k < 4; k++) c.in.solids.push_back(t.leg(k, 1));
+	smooth::TSmoothParams p;
+	const auto held = PathSmoother::run(c.in, p);
+	EXPECT_EQ(held.duplicates, 1u);
+	EXPECT_EQ(held.tied, c.in.contacts.size());
+	EXPECT_LT(Corridor::worst(held.path, c.truth), 0.001);
+	const Eigen::Vector2d a = c.in.solids[3].corners[0] + held.shifts[held.groupOf[3]];
+	const Eigen::Vector2d b = c.in.solids[7].corners[0] + held.shifts[held.groupOf[7]];
+	EXPECT_LT((a - b).norm(), 0.001);
+	p.duplicate_sigma = 0;
+	const auto alone = PathSmoother::run(c.in, p);
+	EXPECT_EQ(alone.duplicates, 0u);
+	EXPECT_GT(Corridor::worst(alone.path, c.truth), 0.01);
 }

@@ -30,7 +30,8 @@ TEST_F(TSmoothParamsTest, DefaultsWithoutTheSectionAndEveryKeyRead)
 	EXPECT_EQ(d.passes, smooth::TSmoothParams().passes);
 	const auto p = smooth::TSmoothParams::load(ini(
 		"[smooth]\nenabled = false\ngate = 0.1\nnormal_gate_deg = 30\nposition_floor = 0.003\nhuber = 1.5\n"
-		"solid_sigma = 2\nrounds = 3\niterations = 7\npasses = 2\n"));
+		"solid_sigma = 2\nrounds = 3\niterations = 7\npasses = 2\nduplicate_sigma = 0.01\nduplicate_shrink = 0.2\n"
+		"duplicate_distance = 0.05\n"));
 	EXPECT_FALSE(p.enabled);
 	EXPECT_DOUBLE_EQ(p.gate, 0.1);
 	EXPECT_NEAR(p.normal_gate, M_PI / 6, 1e-12);
@@ -40,6 +41,9 @@ TEST_F(TSmoothParamsTest, DefaultsWithoutTheSectionAndEveryKeyRead)
 	EXPECT_EQ(p.rounds, 3u);
 	EXPECT_EQ(p.iterations, 7u);
 	EXPECT_EQ(p.passes, 2u);
+	EXPECT_DOUBLE_EQ(p.duplicate_sigma, 0.01);
+	EXPECT_DOUBLE_EQ(p.duplicate_shrink, 0.2);
+	EXPECT_DOUBLE_EQ(p.duplicate_distance, 0.05);
 }
 
 TEST_F(TSmoothParamsTest, BadValuesAndUnknownKeysNameTheFileAndKey)

@@ -44,7 +44,7 @@ std::optional<ContactFactor> ContactFactor::associate(
 			if (distance >= bestDistance) continue;
 			bestDistance = distance;
 			ContactFactor f;
-			f.pose = pose, f.group = groupOf[i], f.p = c.p, f.n = n, f.offset = n.dot(q0);
+			f.pose = pose, f.solid = i, f.group = groupOf[i], f.p = c.p, f.n = n, f.offset = n.dot(q0);
 			const double along = c.sigma_r * n.dot(R * c.shaft);
 			f.sigma = std::sqrt(along * along + floor * floor);
 			best = f;

@@ -1,8 +1,10 @@
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/smooth/ContactFactor.h>
+#include <whiskermap/smooth/DuplicateLegs.h>
 #include <whiskermap/smooth/OdometryFactor.h>
 #include <whiskermap/smooth/PathSmoother.h>
+#include <whiskermap/smooth/SameLegFactor.h>
 #include <whiskermap/smooth/WallLines.h>
 
 #include <Eigen/SparseCholesky>
@@ -13,12 +15,20 @@ namespace whiskermap::smooth
 {
 namespace
 {
+/** The variables: the path and the group shifts. */
+struct State
+{
+	std::vector<Eigen::Vector3d> path;
+	std::vector<Eigen::Vector2d> shifts;
+};
+
 /** The problem of one round: the factors, and the variables' layout (poses 1..N-1, then the
  *  group shifts; pose 0 is fixed). */
 struct Problem
 {
 	const std::vector<OdometryFactor>& odometry;
 	std::vector<ContactFactor> contacts;
+	std::vector<SameLegFactor> same;
 	size_t poses, groups;
 	double huber, solidSigma;
 
@@ -34,43 +44,48 @@ struct Problem
 		return a <= huber ? r * r : 2 * huber * a - huber * huber;
 	}
 
-	double cost(const std::vector<Eigen::Vector3d>& x, const std::vector<Eigen::Vector2d>& d) const
+	double cost(const State& s) const
 	{
+		const auto& x = s.path;
+		const auto& d = s.shifts;
 		double c = 0;
-		for (size_t i = 1; i < poses; i++) c += odometry[i].residual(x[i - 1], x[i]).squaredNorm();  // eq. S2
+		for (size_t i = 1; i < poses; i++)
+			c += odometry[i].residual(x[i - 1], x[i]).squaredNorm();  // eq. S2
 		for (const auto& f : contacts) c += loss(f.residual(x[f.pose], d[f.group]));  // eq. S3
-		for (const auto& s : d) c += s.squaredNorm() / (solidSigma * solidSigma);
+		for (const auto& f : same) c += f.residual(d[f.a], d[f.b]).squaredNorm();  // eq. S4
+		for (const auto& g : d) c += g.squaredNorm() / (solidSigma * solidSigma);
 		return c;
 	}
 
-	/** J^T W J and J^T W r at (x, d). */
-	void normalEquations(
-		const std::vector<Eigen::Vector3d>& x, const std::vector<Eigen::Vector2d>& d, Eigen::SparseMatrix<double>& H,
-		Eigen::VectorXd& b) const
+	/** J^T W J and J^T W r at s. */
+	void normalEquations(const State& s, Eigen::SparseMatrix<double>& H, Eigen::VectorXd& b) const
 	{
+		const auto& x = s.path;
+		const auto& d = s.shifts;
 		std::vector<Eigen::Triplet<double>> t;
-		t.reserve(18 * poses + 25 * contacts.size() + 2 * groups);
+		t.reserve(60 * poses + 25 * contacts.size() + 16 * same.size() + 4 * groups);
 		b = Eigen::VectorXd::Zero(static_cast<long>(size()));
-		// Adds the blocks of one residual row set: columns cols[k] (-1: fixed), Jacobian blocks J[k].
-		auto add = [&](const Eigen::VectorXd& r, const std::vector<std::pair<long, Eigen::MatrixXd>>& blocks, double w) {
-			for (const auto& [ci, Ji] : blocks)
-			{
-				if (ci < 0) continue;
-				b.segment(ci, Ji.cols()) += w * Ji.transpose() * r;
-				for (const auto& [cj, Jj] : blocks)
-				{
-					if (cj < 0) continue;
-					const Eigen::MatrixXd h = w * Ji.transpose() * Jj;
+		// One residual's share, weight w: its Jacobian blocks, each (column (-1: fixed), block).
+		auto add = [&](const auto& r, double w, const auto&... blocks) {
+			auto row = [&](const auto& bi) {
+				if (bi.first < 0) return;
+				b.segment(bi.first, bi.second.cols()) += w * bi.second.transpose() * r;
+				auto product = [&](const auto& bj) {
+					if (bj.first < 0) return;
+					const auto h = (w * bi.second.transpose() * bj.second).eval();
 					for (long u = 0; u < h.rows(); u++)
-						for (long v = 0; v < h.cols(); v++) t.emplace_back(ci + u, cj + v, h(u, v));
-				}
-			}
+						for (long v = 0; v < h.cols(); v++) t.emplace_back(bi.first + u, bj.first + v, h(u, v));
+				};
+				(product(blocks), ...);
+			};
+			(row(blocks), ...);
 		};
+		using std::make_pair;
 		for (size_t i = 1; i < poses; i++)
 		{
 			Eigen::Matrix3d Ja, Jb;
 			const Eigen::Vector3d r = odometry[i].residual(x[i - 1], x[i], &Ja, &Jb);
-			add(r, {{poseColumn(i - 1), Ja}, {poseColumn(i), Jb}}, 1);
+			add(r, 1, make_pair(poseColumn(i - 1), Ja), make_pair(poseColumn(i), Jb));
 		}
 		for (const auto& f : contacts)
 		{
@@ -79,14 +94,36 @@ struct Problem
 			const double r = f.residual(x[f.pose], d[f.group], &Jx, &Jd);
 			double w;
 			loss(r, &w);
-			add(Eigen::VectorXd::Constant(1, r), {{poseColumn(f.pose), Jx.transpose()}, {groupColumn(f.group), Jd.transpose()}}, w);
+			add(Eigen::Matrix<double, 1, 1>(r), w, make_pair(poseColumn(f.pose), Eigen::RowVector3d(Jx.transpose())),
+				make_pair(groupColumn(f.group), Eigen::RowVector2d(Jd.transpose())));
 		}
+		const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
+		for (const auto& f : same)
+			add(f.residual(d[f.a], d[f.b]), 1, make_pair(groupColumn(f.a), Eigen::Matrix2d(I / f.sigma)),
+				make_pair(groupColumn(f.b), Eigen::Matrix2d(-I / f.sigma)));
 		for (size_t g = 0; g < groups; g++)
-			add(d[g] / solidSigma, {{groupColumn(g), Eigen::Matrix2d::Identity() / solidSigma}}, 1);
+			add(Eigen::Vector2d(d[g] / solidSigma), 1, make_pair(groupColumn(g), Eigen::Matrix2d(I / solidSigma)));
 		H.resize(static_cast<long>(size()), static_cast<long>(size()));
 		H.setFromTriplets(t.begin(), t.end());
 	}
 };
+
+/** Eq. S4's factors for the legs the map holds twice, by the contacts first tied. */
+std::vector<SameLegFactor> sameLegs(
+	const std::vector<world::Obstacle>& solids, const std::vector<size_t>& groupOf,
+	const std::vector<ContactFactor>& contacts, const TSmoothParams& params)
+{
+	std::vector<bool> touched(solids.size(), false);
+	for (const auto& f : contacts) touched[f.solid] = true;
+	const auto centre = [&](size_t k) {
+		const auto& c = solids[k].corners;
+		return Eigen::Vector2d((c[0] + c[1] + c[2] + c[3]) / 4);
+	};
+	std::vector<SameLegFactor> same;
+	for (const auto& [i, j] : DuplicateLegs::find(solids, touched, params.duplicate_shrink, params.duplicate_distance))
+		if (groupOf[i] != groupOf[j]) same.push_back({groupOf[i], groupOf[j], centre(i) - centre(j), params.duplicate_sigma});
+	return same;
+}
 }  // namespace
 
 PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& params)
@@ -108,21 +145,26 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	std::vector<OdometryFactor> odometry;
 	odometry.reserve(n);
 	for (size_t i = 0; i < n; i++) odometry.emplace_back(in.increments[i], in.covariances[i]);
-	out.path = in.path;
-	out.shifts.assign(groups, Eigen::Vector2d::Zero());
-	Problem pb{odometry, {}, n, groups, params.huber, params.solid_sigma};
-	if (n == 1) return out;
+	State x{in.path, std::vector<Eigen::Vector2d>(groups, Eigen::Vector2d::Zero())};
+	Problem pb{odometry, {}, {}, n, groups, params.huber, params.solid_sigma};
+	const auto finish = [&]() {
+		out.duplicates = pb.same.size();
+		out.path = std::move(x.path), out.shifts = std::move(x.shifts);
+		return out;
+	};
+	if (n == 1) return finish();
 
 	for (unsigned round = 0; round < params.rounds; round++)
 	{
 		pb.contacts.clear();
 		for (const auto& c : in.contacts)
 			if (auto f = ContactFactor::associate(
-					c, c.sweep, out.path[c.sweep], solids, out.groupOf, out.shifts, params.gate, params.normal_gate,
+					c, c.sweep, x.path[c.sweep], solids, out.groupOf, x.shifts, params.gate, params.normal_gate,
 					params.position_floor))
 				pb.contacts.push_back(*f);
 		out.tied = pb.contacts.size();
-		double cost = pb.cost(out.path, out.shifts);
+		if (round == 0 && params.duplicate_sigma > 0) pb.same = sameLegs(solids, out.groupOf, pb.contacts, params);
+		double cost = pb.cost(x);
 		if (round == 0) out.costBefore = cost;
 		out.rounds = round + 1;
 		double lambda = 1e-4, firstCost = cost;
@@ -130,7 +172,7 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 		{
 			Eigen::SparseMatrix<double> H;
 			Eigen::VectorXd b;
-			pb.normalEquations(out.path, out.shifts, H, b);
+			pb.normalEquations(x, H, b);
 			bool stepped = false;
 			for (int tries = 0; tries < 8 && !stepped; tries++)
 			{
@@ -139,18 +181,17 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 				Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
 				if (solver.info() != Eigen::Success) { lambda *= 10; continue; }
 				const Eigen::VectorXd dx = solver.solve(-b);
-				auto path = out.path;
-				auto shifts = out.shifts;
+				State next = x;
 				for (size_t i = 1; i < n; i++)
 				{
-					path[i] += dx.segment<3>(pb.poseColumn(i));
-					path[i][2] = core::wrapToPi(path[i][2]);
+					next.path[i] += dx.segment<3>(pb.poseColumn(i));
+					next.path[i][2] = core::wrapToPi(next.path[i][2]);
 				}
-				for (size_t g = 0; g < groups; g++) shifts[g] += dx.segment<2>(pb.groupColumn(g));
-				const double c = pb.cost(path, shifts);
+				for (size_t g = 0; g < groups; g++) next.shifts[g] += dx.segment<2>(pb.groupColumn(g));
+				const double c = pb.cost(next);
 				if (c < cost)
 				{
-					out.path = std::move(path), out.shifts = std::move(shifts);
+					x = std::move(next);
 					stepped = cost - c > 1e-9 * cost;
 					cost = c;
 					lambda = std::max(lambda / 10, 1e-9);
@@ -165,6 +206,6 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 		out.costAfter = cost;
 		if (firstCost - cost < 1e-6 * firstCost) break;  // the ties no longer move the estimate
 	}
-	return out;
+	return finish();
 }
 }  // namespace whiskermap::smooth

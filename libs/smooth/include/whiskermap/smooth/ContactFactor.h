@@ -18,6 +18,7 @@ namespace whiskermap::smooth
 struct ContactFactor
 {
 	size_t pose = 0;  ///< the sweep's index in the path
+	size_t solid = 0;  ///< the solid tied to (index into the solids)
 	size_t group = 0;  ///< the solid's group
 	Eigen::Vector2d p{0, 0}, n{1, 0};
 	double offset = 0;  ///< n . q

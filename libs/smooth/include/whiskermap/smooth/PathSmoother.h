@@ -15,10 +15,13 @@ namespace whiskermap::smooth
  *  random walk, and its map with it. The smoother finds the most probable path and map
  *  shifts instead: the path's poses (the first fixed: the known start) and a shift per
  *  solid group (each leg alone, the pieces of one straight wall together: WallLines) minimise
- *    sum |odometry residuals|^2 (eq. S2) + sum huber(contact residuals) (eq. S3) + sum |d / solid_sigma|^2,
+ *    sum |odometry residuals|^2 (eq. S2) + sum huber(contact residuals) (eq. S3)
+ *      + sum |same-leg residuals|^2 (eq. S4) + sum |d / solid_sigma|^2,
  *  by Levenberg-Marquardt on the sparse normal equations. Contacts are tied to faces of the
  *  map's solids (ContactFactor::associate) at the start of each round, from the current
- *  estimate; a contact near no face is left out (it belongs to nothing the map holds). */
+ *  estimate; a contact near no face is left out (it belongs to nothing the map holds). Legs
+ *  the map holds twice (DuplicateLegs: a table mapped again after the path drifted) are held
+ *  to one place (SameLegFactor), which closes the loop the particle left open. */
 class PathSmoother
 {
    public:
@@ -35,6 +38,7 @@ class PathSmoother
 		std::vector<Eigen::Vector3d> path;
 		std::vector<Eigen::Vector2d> shifts;  ///< per group
 		std::vector<size_t> groupOf;  ///< per solid
+		size_t duplicates = 0;  ///< pairs of legs held to one place (eq. S4; DuplicateLegs)
 		size_t tied = 0;  ///< contacts tied to a face in the last round (of contacts.size())
 		double costBefore = 0, costAfter = 0;  ///< the objective at the start path (first round's ties) and at the end
 		unsigned rounds = 0, iterations = 0;

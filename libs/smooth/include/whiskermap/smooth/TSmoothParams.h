@@ -15,6 +15,14 @@ struct TSmoothParams
 	/** Metres: pieces of walls on parallel lines within this of each other are one wall
 	 *  (WallLines; 0: every piece on its own). */
 	double wall_merge = 0.1;
+	/** Metres: std-dev of eq. S4, which holds a leg the map holds twice (DuplicateLegs) to one
+	 *  place (0: duplicates are left alone). */
+	double duplicate_sigma = 0.005;
+	/** Metres: mapped tables (three legs touched) whose footprints, shrunk by this on every
+	 *  side, overlap are one table. */
+	double duplicate_shrink = 0.1;
+	/** Metres: touched legs of two mapped tables whose centres lie this close are one leg. */
+	double duplicate_distance = 0.08;
 	double solid_sigma = 1;  ///< metres: prior std-dev of each solid's shift (walls slide along themselves)
 	unsigned rounds = 6;  ///< association rounds (each re-ties the contacts, then solves)
 	unsigned iterations = 10;  ///< Levenberg-Marquardt iterations per round, at most
