@@ -43,6 +43,7 @@ TEST(OdometryFactor, ZeroAtTheRecordedIncrementAndWhitenedByItsCovariance)
 	const Eigen::Vector3d b(p.x(), p.y(), a[2] + u[2]);
 	const OdometryFactor f(u, Eigen::Vector3d(0.01 * 0.01, 0.02 * 0.02, 0.001 * 0.001).asDiagonal());
 	EXPECT_LT(f.residual(a, b).norm(), 1e-9);
+	EXPECT_LT((f.end(a) - b).norm(), 1e-12);
 	// 1 cm more along a's x axis is one std-dev (0.01 m, with the 0.1 mm floor in quadrature).
 	const Eigen::Vector3d b2 = b + Eigen::Vector3d(std::cos(a[2]), std::sin(a[2]), 0) * 0.01;
 	EXPECT_NEAR(f.residual(a, b2)[0], 0.01 / std::hypot(0.01, 1e-4), 1e-6);

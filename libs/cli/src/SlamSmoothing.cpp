@@ -29,7 +29,7 @@ smooth::PathSmoother::TResult SlamSmoothing::run(
 	auto in = m_input;
 	in.path = std::move(path), in.solids = std::move(solids);
 	auto result = smooth::PathSmoother::run(in, params);
-	for (unsigned pass = 1; pass < params.passes && result.rounds > 0; pass++)  // none: nothing to estimate
+	for (unsigned pass = 1; pass < params.passes && result.rounds > 0; pass++)  // no rounds: nothing estimated (exact odometry), nothing to redo
 	{
 		mrpt::maps::CMultiMetricMap multimap(maps);
 		auto map = multimap.mapByClass<maps::CHierarchicalObjectMap>();

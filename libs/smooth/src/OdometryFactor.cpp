@@ -14,6 +14,12 @@ OdometryFactor::OdometryFactor(const Eigen::Vector3d& increment, const Eigen::Ma
 	sqrtInfo = c.inverse().llt().matrixU();
 }
 
+Eigen::Vector3d OdometryFactor::end(const Eigen::Vector3d& a) const
+{
+	const double c = std::cos(a[2]), s = std::sin(a[2]);
+	return {a[0] + c * u[0] - s * u[1], a[1] + s * u[0] + c * u[1], core::wrapToPi(a[2] + u[2])};
+}
+
 Eigen::Vector3d OdometryFactor::residual(
 	const Eigen::Vector3d& a, const Eigen::Vector3d& b, Eigen::Matrix3d* Ja, Eigen::Matrix3d* Jb) const
 {

@@ -158,12 +158,7 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	// known start, whatever the contacts say.
 	if (std::all_of(in.covariances.begin(), in.covariances.end(), [](const Eigen::Matrix3d& c) { return c.isZero(); }))
 	{
-		for (size_t i = 1; i < n; i++)
-		{
-			const Eigen::Vector3d &a = x.path[i - 1], &u = in.increments[i];
-			const double c = std::cos(a[2]), s = std::sin(a[2]);
-			x.path[i] = {a[0] + c * u[0] - s * u[1], a[1] + s * u[0] + c * u[1], core::wrapToPi(a[2] + u[2])};
-		}
+		for (size_t i = 1; i < n; i++) x.path[i] = odometry[i].end(x.path[i - 1]);
 		return finish();
 	}
 

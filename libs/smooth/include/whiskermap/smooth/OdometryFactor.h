@@ -15,6 +15,9 @@ struct OdometryFactor
 	 *  odometry's zero covariance invertible). */
 	OdometryFactor(const Eigen::Vector3d& increment, const Eigen::Matrix3d& covariance);
 
+	/** The pose the increment leads to from a: where the residual is zero. */
+	Eigen::Vector3d end(const Eigen::Vector3d& a) const;
+
 	/** The whitened residual at (a, b), and its Jacobians with respect to a and b if asked for. */
 	Eigen::Vector3d residual(
 		const Eigen::Vector3d& a, const Eigen::Vector3d& b, Eigen::Matrix3d* Ja = nullptr,
