@@ -137,6 +137,7 @@ TEST(PathSmoother, ALegMappedTwiceIsHeldToOnePlace)
 	smooth::TSmoothParams p;
 	const auto held = PathSmoother::run(c.in, p);
 	EXPECT_EQ(held.duplicates, 1u);
+	EXPECT_EQ(held.duplicatesApart, 0u);
 	EXPECT_EQ(held.tied, c.in.contacts.size());
 	EXPECT_LT(Corridor::worst(held.path, c.truth), 0.001);
 	const Eigen::Vector2d a = c.in.solids[3].corners[0] + held.shifts[held.groupOf[3]];
@@ -146,6 +147,34 @@ TEST(PathSmoother, ALegMappedTwiceIsHeldToOnePlace)
 	const auto alone = PathSmoother::run(c.in, p);
 	EXPECT_EQ(alone.duplicates, 0u);
 	EXPECT_GT(Corridor::worst(alone.path, c.truth), 0.01);
+}
+
+TEST(PathSmoother, LegsOfTwoTablesSideBySideAreLeftApart)
+{
+	// The corridor with odometry good to 0.1 mm a step, the end wall replaced by two real
+	// tables' legs: the first half of the path touches the one whose face is at x = 2.4
+	// straight ahead, the second half one 7 cm to its left whose face is at x = 2.43. Their
+	// centres lie 7.6 cm apart, so DuplicateLegs pairs them (duplicate_distance 0.08). Holding
+	// them to one place costs more than leaving each where its contacts put it (eq. S6).
+	Corridor c;
+	for (size_t i = 1; i < c.truth.size(); i++)
+		c.in.increments[i] = {0.05, 0, 0}, c.in.covariances[i] = 1e-8 * Eigen::Matrix3d::Identity();
+	c.in.path = c.truth;
+	for (auto& k : c.in.contacts)
+		if (k.normal == M_PI && k.sweep > 20) k.p = {2.43 - c.truth[k.sweep][0], 0.07};
+	c.in.solids.pop_back();
+	world::Table t;
+	t.x = 2.925, t.y = 0.3, t.length = 1, t.width = 0.6, t.leg_width = 0.05;  // leg 2 at (2.425, 0)
+	for (int k = 0; k < 4; k++) c.in.solids.push_back(t.leg(k, 0));
+	t.x += 0.03, t.y += 0.07;  // leg 2 at (2.455, 0.07)
+	for (int k = 0; k < 4; k++) c.in.solids.push_back(t.leg(k, 1));
+	const auto r = PathSmoother::run(c.in, smooth::TSmoothParams());
+	EXPECT_EQ(r.duplicates, 0u);
+	EXPECT_EQ(r.duplicatesApart, 1u);
+	EXPECT_EQ(r.tied, c.in.contacts.size());
+	EXPECT_LT(Corridor::worst(r.path, c.truth), 0.001);
+	EXPECT_LT(r.shifts[r.groupOf[3]].norm(), 0.001);
+	EXPECT_LT(r.shifts[r.groupOf[7]].norm(), 0.001);
 }
 
 TEST(PathSmoother, OdometryToldExactIsKept)

@@ -88,8 +88,8 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 	j["map_matches_best_particle"] = run.mapMatches ? nlohmann::json(*run.mapMatches) : nlohmann::json();  // null: smoothed
 	if (const auto* sm = run.smoothing)
 		j["smoothing"] = {
-			{"contacts_tied", sm->tied}, {"duplicate_legs", sm->duplicates}, {"cost_before", sm->costBefore}, {"cost_after", sm->costAfter},
-			{"rounds", sm->rounds}, {"iterations", sm->iterations}, {"seconds", run.smoothingSeconds}};
+			{"contacts_tied", sm->tied}, {"duplicate_legs", sm->duplicates}, {"duplicate_legs_apart", sm->duplicatesApart},
+			{"cost_before", sm->costBefore}, {"cost_after", sm->costAfter}, {"rounds", sm->rounds}, {"iterations", sm->iterations}, {"seconds", run.smoothingSeconds}};
 	else
 		j["smoothing"] = nullptr;
 	if (scores)

@@ -32,6 +32,7 @@ struct Problem
 	std::vector<SameLegFactor> same;
 	size_t poses, groups;
 	double huber, solidSigma;
+	double outlier = 0;  ///< metres: a contact farther than this from its face costs as if this far (0: no cap)
 
 	size_t size() const { return 3 * (poses - 1) + 2 * groups; }
 	long poseColumn(size_t i) const { return i == 0 ? -1 : static_cast<long>(3 * (i - 1)); }
@@ -52,7 +53,11 @@ struct Problem
 		double c = 0;
 		for (size_t i = 1; i < poses; i++)
 			c += odometry[i].residual(x[i - 1], x[i]).squaredNorm();  // eq. S2
-		for (const auto& f : contacts) c += loss(f.residual(x[f.pose], d[f.group]));  // eq. S3
+		for (const auto& f : contacts)
+		{
+			const double l = loss(f.residual(x[f.pose], d[f.group]));  // eq. S3
+			c += outlier > 0 ? std::min(l, loss(outlier / f.sigma)) : l;
+		}
 		for (const auto& f : same) c += f.residual(d[f.a], d[f.b]).squaredNorm();  // eq. S4
 		for (const auto& g : d) c += g.squaredNorm() / (solidSigma * solidSigma);
 		return c;
@@ -125,55 +130,50 @@ std::vector<SameLegFactor> sameLegs(
 		if (groupOf[i] != groupOf[j]) same.push_back({groupOf[i], groupOf[j], centre(i) - centre(j), params.duplicate_sigma});
 	return same;
 }
-}  // namespace
 
-PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& params)
+/** Ties every contact seen from x to the nearest face of the shifted solids (pb.contacts). */
+void tieContacts(
+	Problem& pb, const State& x, const PathSmoother::TInput& in, const std::vector<world::Obstacle>& solids,
+	const std::vector<size_t>& groupOf, const TSmoothParams& params)
 {
-	const size_t n = in.path.size();
-	if (n == 0) throw core::Error("path smoother: empty path");
-	if (in.increments.size() != n || in.covariances.size() != n)
-		throw core::Error("path smoother: " + std::to_string(n) + " poses but " + std::to_string(in.increments.size()) +
-						  " odometry increments");
-	for (const auto& c : in.contacts)
-		if (c.sweep >= n) throw core::Error("path smoother: a contact of sweep " + std::to_string(c.sweep) + " of " + std::to_string(n));
-	TResult out;
-	// Groups: each solid alone (the particle's table may hold its legs where the drift of the
-	// moment put each), but pieces of one straight wall together (WallLines).
-	size_t groups = in.solids.size();
-	for (size_t i = 0; i < groups; i++) out.groupOf.push_back(i);
-	auto solids = in.solids;
-	if (params.wall_merge > 0) groups = WallLines::merge(solids, out.groupOf, params.wall_merge);
-	std::vector<OdometryFactor> odometry;
-	odometry.reserve(n);
-	for (size_t i = 0; i < n; i++) odometry.emplace_back(in.increments[i], in.covariances[i]);
-	State x{in.path, std::vector<Eigen::Vector2d>(groups, Eigen::Vector2d::Zero())};
-	Problem pb{odometry, {}, {}, n, groups, params.huber, params.solid_sigma};
-	const auto finish = [&]() {
-		out.duplicates = pb.same.size();
-		out.path = std::move(x.path), out.shifts = std::move(x.shifts);
-		return out;
-	};
-	if (n == 1) return finish();
-	// Odometry told exact (every increment's covariance zero): the path is its chain from the
-	// known start, whatever the contacts say.
-	if (std::all_of(in.covariances.begin(), in.covariances.end(), [](const Eigen::Matrix3d& c) { return c.isZero(); }))
+	pb.contacts.clear();
+	for (size_t k = 0; k < in.contacts.size(); k++)
 	{
-		for (size_t i = 1; i < n; i++) x.path[i] = odometry[i].end(x.path[i - 1]);
-		return finish();
+		const auto& c = in.contacts[k];
+		if (auto f = ContactFactor::associate(
+				c, c.sweep, x.path[c.sweep], solids, groupOf, x.shifts, params.gate, params.normal_gate,
+				params.position_floor))
+			pb.contacts.push_back(*f), pb.contacts.back().contact = k;
 	}
+}
 
+/** The cost of x over every contact either of two solutions tied (eq. S6): pb's own ties, and
+ *  each contact only `other` tied against the face `other` tied it to, every contact's loss
+ *  capped at `outlier` metres from its face (a solution that drags a solid away from its
+ *  contacts unties them, which must not make it cheaper). */
+double unionCost(Problem pb, const State& x, const std::vector<ContactFactor>& other, size_t contacts, double outlier)
+{
+	std::vector<bool> own(contacts, false);
+	for (const auto& f : pb.contacts) own[f.contact] = true;
+	for (const auto& f : other)
+		if (!own[f.contact]) pb.contacts.push_back(f);
+	pb.outlier = outlier;
+	return pb.cost(x);
+}
+
+/** Rounds of tie-and-solve from x by Levenberg-Marquardt, pb.same (eq. S4) as given. Sets
+ *  out's tied, costAfter, rounds and iterations; pb.contacts ends with the last round's ties. */
+State solve(
+	Problem& pb, State x, const PathSmoother::TInput& in, const std::vector<world::Obstacle>& solids,
+	const TSmoothParams& params, PathSmoother::TResult& out)
+{
+	const size_t n = x.path.size(), groups = x.shifts.size();
+	out.rounds = out.iterations = 0;
 	for (unsigned round = 0; round < params.rounds; round++)
 	{
-		pb.contacts.clear();
-		for (const auto& c : in.contacts)
-			if (auto f = ContactFactor::associate(
-					c, c.sweep, x.path[c.sweep], solids, out.groupOf, x.shifts, params.gate, params.normal_gate,
-					params.position_floor))
-				pb.contacts.push_back(*f);
+		tieContacts(pb, x, in, solids, out.groupOf, params);
 		out.tied = pb.contacts.size();
-		if (round == 0 && params.duplicate_sigma > 0) pb.same = sameLegs(solids, out.groupOf, pb.contacts, params);
 		double cost = pb.cost(x);
-		if (round == 0) out.costBefore = cost;
 		out.rounds = round + 1;
 		double lambda = 1e-4, firstCost = cost;
 		for (unsigned it = 0; it < params.iterations; it++)
@@ -214,6 +214,73 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 		out.costAfter = cost;
 		if (firstCost - cost < 1e-6 * firstCost) break;  // the ties no longer move the estimate
 	}
-	return finish();
+	return x;
+}
+}  // namespace
+
+PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& params)
+{
+	const size_t n = in.path.size();
+	if (n == 0) throw core::Error("path smoother: empty path");
+	if (in.increments.size() != n || in.covariances.size() != n)
+		throw core::Error("path smoother: " + std::to_string(n) + " poses but " + std::to_string(in.increments.size()) +
+						  " odometry increments");
+	for (const auto& c : in.contacts)
+		if (c.sweep >= n) throw core::Error("path smoother: a contact of sweep " + std::to_string(c.sweep) + " of " + std::to_string(n));
+	TResult out;
+	// Groups: each solid alone (the particle's table may hold its legs where the drift of the
+	// moment put each), but pieces of one straight wall together (WallLines).
+	size_t groups = in.solids.size();
+	for (size_t i = 0; i < groups; i++) out.groupOf.push_back(i);
+	auto solids = in.solids;
+	if (params.wall_merge > 0) groups = WallLines::merge(solids, out.groupOf, params.wall_merge);
+	std::vector<OdometryFactor> odometry;
+	odometry.reserve(n);
+	for (size_t i = 0; i < n; i++) odometry.emplace_back(in.increments[i], in.covariances[i]);
+	const State start{in.path, std::vector<Eigen::Vector2d>(groups, Eigen::Vector2d::Zero())};
+	Problem pb{odometry, {}, {}, n, groups, params.huber, params.solid_sigma};
+	const auto finish = [&](State x) {
+		out.duplicates = pb.same.size();
+		out.path = std::move(x.path), out.shifts = std::move(x.shifts);
+		return out;
+	};
+	if (n == 1) return finish(start);
+	// Odometry told exact (every increment's covariance zero): the path is its chain from the
+	// known start, whatever the contacts say.
+	if (std::all_of(in.covariances.begin(), in.covariances.end(), [](const Eigen::Matrix3d& c) { return c.isZero(); }))
+	{
+		State x = start;
+		for (size_t i = 1; i < n; i++) x.path[i] = odometry[i].end(x.path[i - 1]);
+		return finish(x);
+	}
+
+	// Eq. S4's pairs, from the contacts the start ties.
+	tieContacts(pb, start, in, solids, out.groupOf, params);
+	if (params.duplicate_sigma > 0) pb.same = sameLegs(solids, out.groupOf, pb.contacts, params);
+	State x = solve(pb, start, in, solids, params, out);
+	// The pairs are a hypothesis (the copies are one leg): on a drifted map some are wrong, and
+	// holding them bends the path. They are kept when the solution holding them costs no more
+	// than the one leaving them apart, over every contact either tied (unionCost), plus 4 a pair
+	// (Akaike: each pair held takes a leg's two coordinates out of the model).
+	if (!pb.same.empty())
+	{
+		auto same = std::move(pb.same);
+		pb.same.clear();
+		const auto heldTies = pb.contacts;
+		TResult apart = out;
+		State y = solve(pb, start, in, solids, params, apart);
+		const double apartCost = unionCost(pb, y, heldTies, in.contacts.size(), params.gate);
+		const auto apartTies = std::move(pb.contacts);
+		pb.contacts = heldTies, pb.same = std::move(same);
+		const double heldCost = unionCost(pb, x, apartTies, in.contacts.size(), params.gate);
+		if (apartCost + 4.0 * static_cast<double>(pb.same.size()) < heldCost)  // eq. S6
+		{
+			x = std::move(y), out = apart, out.duplicatesApart = pb.same.size();
+			pb.same.clear();
+		}
+	}
+	tieContacts(pb, start, in, solids, out.groupOf, params);
+	out.costBefore = pb.cost(start);  // with the first round's ties and the pairs kept
+	return finish(std::move(x));
 }
 }  // namespace whiskermap::smooth

@@ -17,6 +17,7 @@ namespace whiskermap::smooth
  *  fixed when the contact is tied (associate), as the face is. */
 struct ContactFactor
 {
+	size_t contact = 0;  ///< the contact's index in PathSmoother's input (set by the caller)
 	size_t pose = 0;  ///< the sweep's index in the path
 	size_t solid = 0;  ///< the solid tied to (index into the solids)
 	size_t group = 0;  ///< the solid's group

@@ -21,7 +21,8 @@ namespace whiskermap::smooth
  *  map's solids (ContactFactor::associate) at the start of each round, from the current
  *  estimate; a contact near no face is left out (it belongs to nothing the map holds). Legs
  *  the map holds twice (DuplicateLegs: a table mapped again after the path drifted) are held
- *  to one place (SameLegFactor), which closes the loop the particle left open. Odometry told
+ *  to one place (SameLegFactor), which closes the loop the particle left open, unless the
+ *  solution holding them costs more than the one leaving them apart (eq. S6). Odometry told
  *  exact (every increment's covariance zero) leaves nothing to estimate: the path is the
  *  odometry's chain from the start. */
 class PathSmoother
@@ -41,6 +42,7 @@ class PathSmoother
 		std::vector<Eigen::Vector2d> shifts;  ///< per group
 		std::vector<size_t> groupOf;  ///< per solid
 		size_t duplicates = 0;  ///< pairs of legs held to one place (eq. S4; DuplicateLegs)
+		size_t duplicatesApart = 0;  ///< pairs found but left apart: holding them cost more (eq. S6)
 		size_t tied = 0;  ///< contacts tied to a face in the last round (of contacts.size())
 		double costBefore = 0, costAfter = 0;  ///< the objective at the start path (first round's ties) and at the end
 		unsigned rounds = 0, iterations = 0;
