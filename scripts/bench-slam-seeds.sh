@@ -36,13 +36,14 @@ for s in seeds:
     M = json.load(open(f"{work}/seed{s}/metrics.json"))
     e, o = S["estimated"]["trajectory"], S["odometry"]["trajectory"]
     f = S["filter"]["trajectory"] if "filter" in S else e  # before 2026-12-05: no smoothing
-    rows.append((e["ate_rmse_m"], e["aligned_rmse_m"], e["final_error_m"], M["f1"], S["time_per_step_ms"]["mean"], S["resamplings"], o["ate_rmse_m"], f["ate_rmse_m"], M["rmse_m"]))
+    al = M.get("rmse_aligned_m")  # before 2026-12-05 evening: not written
+    rows.append((e["ate_rmse_m"], e["aligned_rmse_m"], e["final_error_m"], M["f1"], S["time_per_step_ms"]["mean"], S["resamplings"], o["ate_rmse_m"], f["ate_rmse_m"], M["rmse_m"], al if al is not None else float("nan")))
     print(f"seed {s}: ATE raw {e['ate_rmse_m']:.3f} m, aligned {e['aligned_rmse_m']:.3f} m, final {e['final_error_m']:.3f} m; "
-          f"map F1 {M['f1']:.2f}, centre RMSE {M['rmse_m']:.3f} m; {S['time_per_step_ms']['mean']:.0f} ms per step (mean); "
+          f"map F1 {M['f1']:.2f}, centre RMSE {M['rmse_m']:.3f} m (aligned {rows[-1][9]:.3f} m); {S['time_per_step_ms']['mean']:.0f} ms per step (mean); "
           f"{S['resamplings']} resamplings; best particle ATE raw {f['ate_rmse_m']:.3f} m")
 med = lambda k: statistics.median(r[k] for r in rows)
 print(f"median over {len(rows)} seeds: ATE raw {med(0):.3f} m (worst {max(r[0] for r in rows):.3f}), aligned {med(1):.3f} m, "
-      f"final {med(2):.3f} m, map F1 {med(3):.2f} (worst {min(r[3] for r in rows):.2f}), centre RMSE {med(8):.3f} m, "
+      f"final {med(2):.3f} m, map F1 {med(3):.2f} (worst {min(r[3] for r in rows):.2f}), centre RMSE {med(8):.3f} m (aligned {med(9):.3f} m), "
       f"{med(4):.0f} ms per step (mean); best particle ATE raw {med(7):.3f} m (worst {max(r[7] for r in rows):.3f}); "
       f"better than the odometry ({rows[0][6]:.3f} m) on {sum(r[0] < r[6] for r in rows)} of {len(rows)}")
 PY

@@ -72,6 +72,7 @@ void bindEval(py::module_& m)
 		.def_readonly("f1", &Figures::f1)
 		.def_readonly("count_error", &Figures::count_error)
 		.def_readonly("rmse_m", &Figures::rmse_m)
+		.def_readonly("rmse_aligned_m", &Figures::rmse_aligned_m)
 		.def_readonly("yaw_err_deg", &Figures::yaw_err_deg)
 		.def_readonly("ospa", &Figures::ospa);
 

@@ -103,8 +103,12 @@ def test_map_evaluation_pieces(arena):
     assert e.matched == 5 and e.truth_match[0] == -1
     e = wm.MapEvaluation.compute(truth, moved, wm.EvalOptions(gate_distance=0.6))
     assert e.matched == 6 and e.figures.rmse_m == pytest.approx(0.5 / np.sqrt(6))
+    shifted = truth.copy()
+    shifted["x"] += 0.03  # the whole map moved: its shape is exact
+    e = wm.MapEvaluation.compute(truth, shifted)
+    assert e.figures.rmse_m == pytest.approx(0.03) and e.figures.rmse_aligned_m == pytest.approx(0, abs=1e-9)
     empty = wm.MapEvaluation.compute(truth, truth[:0])
-    assert np.isnan(empty.figures.rmse_m) and empty.figures.recall == 0
+    assert np.isnan(empty.figures.rmse_m) and np.isnan(empty.figures.rmse_aligned_m) and empty.figures.recall == 0
     pp = wm.PerPoseEvaluation.compute(truth, [truth, truth[:3]])
     assert pp.poses == 2 and pp.all.recall == pytest.approx(0.75) and pp.local is None
     with pytest.raises(wm.WhiskermapError, match="ospa_p"):

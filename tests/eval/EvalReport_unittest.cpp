@@ -24,6 +24,7 @@ TEST(EvalReport, MapOnlyJson)
 		"  \"recall\": 0.500000,\n"
 		"  \"f1\": 0.666667,\n"
 		"  \"rmse_m\": 0.050000,\n"
+		"  \"rmse_aligned_m\": null,\n"
 		"  \"yaw_err_deg\": 0.000000,\n"
 		"  \"ospa\": 0.275000,\n"
 		"  \"count_error\": -1,\n"
@@ -51,6 +52,7 @@ TEST(EvalReport, FullJsonWithIdentifiabilityAndPerPose)
 		"    \"recall\": 0.000000,\n"
 		"    \"f1\": 0.000000,\n"
 		"    \"rmse_m\": null,\n"
+		"    \"rmse_aligned_m\": null,\n"
 		"    \"yaw_err_deg\": null,\n"
 		"    \"ospa\": 0.500000,\n"
 		"    \"count_error\": -1.000000,\n"
@@ -59,6 +61,7 @@ TEST(EvalReport, FullJsonWithIdentifiabilityAndPerPose)
 		"      \"recall\": 1.000000,\n"
 		"      \"f1\": 0.666667,\n"
 		"      \"rmse_m\": 0.100000,\n"
+		"      \"rmse_aligned_m\": null,\n"
 		"      \"yaw_err_deg\": 4.000000,\n"
 		"      \"ospa\": 0.250000,\n"
 		"      \"count_error\": 1.000000\n"
@@ -72,7 +75,7 @@ TEST(EvalReport, TextNamesEveryFigure)
 	auto r = report();
 	r.perPose = eval::PerPoseEvaluation{2, eval::Figures{}, eval::Figures{}};
 	const auto text = r.toText();
-	for (const char* s : {"precision", "recall", "F1", "centre RMSE (m)", "yaw error (deg)",
+	for (const char* s : {"precision", "recall", "F1", "centre RMSE (m)", "centre RMSE aligned (m)", "yaw error (deg)",
 						  "OSPA (m)", "count error", "per-pose local", "averaged over 2 poses",
 						  "1 tables estimated, 2 true, 1 matched"})
 		EXPECT_NE(text.find(s), std::string::npos) << s << " not in:\n" << text;

@@ -109,6 +109,30 @@ TEST(MapEvaluation, OptimalNotGreedyMatching)
 	EXPECT_NEAR(e.figures.rmse_m, std::sqrt((0.11 * 0.11 + 0.22 * 0.22) / 2), 1e-12);
 }
 
+TEST(MapEvaluation, AlignedCentreErrorIsTheMapsShapeWithoutItsOffset)
+{
+	// The map moved whole (3 cm along x, 2 cm along y, turned 1 degree about the origin), and
+	// one table 1 cm further: the raw centre error carries the motion, the aligned one only
+	// what is left once the best rigid motion is taken out (the 1 cm, shared by the fit).
+	const double yaw = M_PI / 180;
+	std::vector<world::Table> moved;
+	for (const auto& t : TRUTH)
+		moved.push_back(table(
+			std::cos(yaw) * t.x - std::sin(yaw) * t.y + 0.03, std::sin(yaw) * t.x + std::cos(yaw) * t.y + 0.02,
+			t.yaw * 180 / M_PI + 1));
+	auto e = score(moved);
+	EXPECT_EQ(e.matched, 3u);
+	EXPECT_GT(e.figures.rmse_m, 0.03);
+	EXPECT_NEAR(e.figures.rmse_aligned_m, 0, 1e-9);
+	moved[2].x += 0.01;
+	e = score(moved);
+	EXPECT_GT(e.figures.rmse_aligned_m, 0.002);
+	EXPECT_LT(e.figures.rmse_aligned_m, 0.01);
+	// Fewer than three matched: no shape to speak of.
+	EXPECT_TRUE(std::isnan(score({moved[0], moved[1]}).figures.rmse_aligned_m));
+	EXPECT_FALSE(std::isnan(score({moved[0], moved[1]}).figures.rmse_m));
+}
+
 TEST(MapEvaluation, EmptySetsAndBadOptions)
 {
 	const auto none = MapEvaluation::compute({}, {}, OPTS);

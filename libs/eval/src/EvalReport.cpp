@@ -23,6 +23,7 @@ const FigureRow FIGURE_ROWS[] = {
 	{"recall", "recall", &Figures::recall},
 	{"f1", "F1", &Figures::f1},
 	{"rmse_m", "centre RMSE (m)", &Figures::rmse_m},
+	{"rmse_aligned_m", "centre RMSE aligned (m)", &Figures::rmse_aligned_m},
 	{"yaw_err_deg", "yaw error (deg)", &Figures::yaw_err_deg},
 	{"ospa", "OSPA (m)", &Figures::ospa},
 	{"count_error", "count error", &Figures::count_error},

@@ -30,6 +30,7 @@ void FiguresMean::add(const Figures& f)
 	m_sum.count_error += f.count_error;
 	m_sum.ospa += f.ospa;
 	m_n++;
+	if (!std::isnan(f.rmse_aligned_m)) m_aligned += f.rmse_aligned_m, m_alignedDefined++;
 	if (std::isnan(f.rmse_m)) return;
 	m_rmse += f.rmse_m;
 	m_yaw += f.yaw_err_deg;
@@ -43,6 +44,7 @@ Figures FiguresMean::result() const
 	const double n = double(m_n);
 	m.precision /= n, m.recall /= n, m.f1 /= n, m.count_error /= n, m.ospa /= n;
 	if (m_defined) m.rmse_m = m_rmse / m_defined, m.yaw_err_deg = m_yaw / m_defined;
+	m.rmse_aligned_m = m_alignedDefined ? m_aligned / double(m_alignedDefined) : NAN;
 	return m;
 }
 

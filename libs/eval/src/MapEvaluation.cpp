@@ -1,6 +1,7 @@
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/eval/MapEvaluation.h>
 #include <whiskermap/eval/Ospa.h>
+#include <whiskermap/eval/Se2Alignment.h>
 #include <whiskermap/eval/SparseAssignment.h>
 
 #include <algorithm>
@@ -122,16 +123,26 @@ MapEvaluation MapEvaluation::compute(
 	e.truth = truth.size();
 	e.truthMatch = SparseAssignment::solve(static_cast<int>(truth.size()), static_cast<int>(estimated.size()), c.pairs, INFINITY);
 	double sumSq = 0, sumYaw = 0;
+	std::vector<Eigen::Vector2d> from, to;  // the matched centres
 	for (size_t k = 0; k < c.pairs.size(); k++)
 	{
-		if (e.truthMatch[c.pairs[k].row] != c.pairs[k].col) continue;
+		const auto& p = c.pairs[k];
+		if (e.truthMatch[p.row] != p.col) continue;
 		e.matched++;
-		sumSq += c.pairs[k].cost * c.pairs[k].cost;
+		sumSq += p.cost * p.cost;
 		sumYaw += c.yawErr[k];
+		from.emplace_back(estimated[p.col].x, estimated[p.col].y), to.emplace_back(truth[p.row].x, truth[p.row].y);
 	}
 	e.figures = Figures::of(
 		e.estimated, e.truth, e.matched, sumSq, sumYaw,
 		Ospa::distance(centres(estimated), centres(truth), opts.ospa_c, opts.ospa_p));
+	if (from.size() >= 3)
+	{
+		const auto a = Se2Alignment::fit(from, to);
+		double sq = 0;
+		for (size_t i = 0; i < from.size(); i++) sq += (a.apply(from[i]) - to[i]).squaredNorm();
+		e.figures.rmse_aligned_m = std::sqrt(sq / double(from.size()));
+	}
 	if (estimateHasClasses) e.classes = classFigures(truth, estimated, opts, e.truthMatch);
 	return e;
 }

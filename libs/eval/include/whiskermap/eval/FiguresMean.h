@@ -14,7 +14,7 @@ class FiguresMean
 
    private:
 	Figures m_sum{0, 0, 0, 0, NAN, NAN, 0};
-	double m_rmse = 0, m_yaw = 0;
-	size_t m_n = 0, m_defined = 0;
+	double m_rmse = 0, m_yaw = 0, m_aligned = 0;
+	size_t m_n = 0, m_defined = 0, m_alignedDefined = 0;
 };
 }  // namespace whiskermap::eval
