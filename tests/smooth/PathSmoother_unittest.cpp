@@ -42,6 +42,39 @@ struct Corridor
 			world::Obstacle::rectangle({2.45 + 0.1, 0}, M_PI / 2, 1, 0.05, 0.5)};  // end wall as mapped: 10 cm off
 	}
 
+	/** The end wall replaced by two tables' legs 2: table 0's at (2.425, 0) (face x = 2.4),
+	 *  table 1's `shift` from it (solids 3 and 7). */
+	void endLegs(const Eigen::Vector2d& shift)
+	{
+		in.solids.pop_back();
+		world::Table t;
+		t.x = 2.925, t.y = 0.3, t.length = 1, t.width = 0.6, t.leg_width = 0.05;
+		for (int k = 0; k < 4; k++) in.solids.push_back(t.leg(k, 0));
+		t.x += shift.x(), t.y += shift.y();
+		for (int k = 0; k < 4; k++) in.solids.push_back(t.leg(k, 1));
+	}
+
+	/** Exact increments, each with `covariance`, but a blind step to sweep 21 (1 m std-dev: the
+	 *  robot was lifted), across which the start estimate drifted 3 cm along x. */
+	void blindStep(Eigen::Matrix3d covariance)
+	{
+		for (size_t i = 1; i < truth.size(); i++) in.increments[i] = {0.05, 0, 0}, in.covariances[i] = covariance;
+		in.covariances[21] = Eigen::Matrix3d::Identity();
+		for (size_t i = 0; i < truth.size(); i++) in.path[i] = truth[i] + Eigen::Vector3d(i > 20 ? 0.03 : 0, 0, 0);
+	}
+
+	/** Every contact tied, the path the truth within 1 mm, `held` pairs held and `apart` left
+	 *  apart, and the solids `unmoved` (indices) not shifted by more than 1 mm. */
+	void expectDecided(
+		const PathSmoother::TResult& r, size_t held, size_t apart, std::initializer_list<size_t> unmoved) const
+	{
+		EXPECT_EQ(r.duplicates, held);
+		EXPECT_EQ(r.duplicatesApart, apart);
+		EXPECT_EQ(r.tied, in.contacts.size());
+		EXPECT_LT(worst(r.path, truth), 0.001);
+		for (const size_t k : unmoved) EXPECT_LT(r.shifts[r.groupOf[k]].norm(), 0.001) << "solid " << k;
+	}
+
 	static double worst(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b)
 	{
 		double w = 0;
@@ -125,15 +158,8 @@ TEST(PathSmoother, ALegMappedTwiceIsHeldToOnePlace)
 	// time, 3 cm further (a second table). Left alone, the copy's shift and the second half
 	// of the path share the 3 cm; held to the first copy (eq. S4), the path is the truth.
 	Corridor c;
-	for (size_t i = 1; i < c.truth.size(); i++) c.in.increments[i] = {0.05, 0, 0};
-	c.in.covariances[21] = Eigen::Matrix3d::Identity();
-	for (size_t i = 0; i < c.truth.size(); i++) c.in.path[i] = c.truth[i] + Eigen::Vector3d(i > 20 ? 0.03 : 0, 0, 0);
-	c.in.solids.pop_back();
-	world::Table t;
-	t.x = 2.925, t.y = 0.3, t.length = 1, t.width = 0.6, t.leg_width = 0.05;  // leg 2 at (2.425, 0)
-	for (int k = 0; k < 4; k++) c.in.solids.push_back(t.leg(k, 0));
-	t.x += 0.03;
-	for (int k = 0; k < 4; k++) c.in.solids.push_back(t.leg(k, 1));
+	c.blindStep(c.in.covariances[1]);
+	c.endLegs({0.03, 0});
 	smooth::TSmoothParams p;
 	const auto held = PathSmoother::run(c.in, p);
 	EXPECT_EQ(held.duplicates, 1u);
@@ -162,19 +188,31 @@ TEST(PathSmoother, LegsOfTwoTablesSideBySideAreLeftApart)
 	c.in.path = c.truth;
 	for (auto& k : c.in.contacts)
 		if (k.normal == M_PI && k.sweep > 20) k.p = {2.43 - c.truth[k.sweep][0], 0.07};
-	c.in.solids.pop_back();
-	world::Table t;
-	t.x = 2.925, t.y = 0.3, t.length = 1, t.width = 0.6, t.leg_width = 0.05;  // leg 2 at (2.425, 0)
-	for (int k = 0; k < 4; k++) c.in.solids.push_back(t.leg(k, 0));
-	t.x += 0.03, t.y += 0.07;  // leg 2 at (2.455, 0.07)
-	for (int k = 0; k < 4; k++) c.in.solids.push_back(t.leg(k, 1));
-	const auto r = PathSmoother::run(c.in, smooth::TSmoothParams());
-	EXPECT_EQ(r.duplicates, 0u);
-	EXPECT_EQ(r.duplicatesApart, 1u);
-	EXPECT_EQ(r.tied, c.in.contacts.size());
-	EXPECT_LT(Corridor::worst(r.path, c.truth), 0.001);
-	EXPECT_LT(r.shifts[r.groupOf[3]].norm(), 0.001);
-	EXPECT_LT(r.shifts[r.groupOf[7]].norm(), 0.001);
+	c.endLegs({0.03, 0.07});  // the second leg 2 at (2.455, 0.07)
+	c.expectDecided(PathSmoother::run(c.in, smooth::TSmoothParams()), 0, 1, {3, 7});
+}
+
+TEST(PathSmoother, EachTableMappedTwiceIsDecidedOnItsOwn)
+{
+	// ALegMappedTwiceIsHeldToOnePlace's corridor (odometry good to 1 mm a step but for the
+	// blind step; the second half mapped the end leg a second time, 3 cm further), plus two
+	// real legs of two other tables to the right of the first half, 6.7 cm apart: sweeps 0-9
+	// touch one (its face at y = -0.3), sweeps 10-20 the other (face at y = -0.33). DuplicateLegs
+	// pairs both; eq. S6 holds the copy and leaves the two real legs apart.
+	Corridor c;
+	c.blindStep(0.01 * c.in.covariances[1]);
+	c.endLegs({0.03, 0});
+	for (uint32_t i = 0; i <= 20; i++)
+	{
+		baseline::Contact right;
+		const double x = c.truth[i][0];
+		right.p = i < 10 ? Eigen::Vector2d(0.5 - x, -0.3) : Eigen::Vector2d(0.56 - x, -0.33);
+		right.normal = M_PI / 2, right.shaft = {0, -1}, right.sigma_r = 0.002, right.sweep = i;
+		c.in.contacts.push_back(right);
+	}
+	c.in.solids.push_back(world::Obstacle::rectangle({0.5, -0.325}, 0, 0.025, 0.025, 0.5, 2, 0));
+	c.in.solids.push_back(world::Obstacle::rectangle({0.56, -0.355}, 0, 0.025, 0.025, 0.5, 3, 0));
+	c.expectDecided(PathSmoother::run(c.in, smooth::TSmoothParams()), 1, 1, {9, 10});
 }
 
 TEST(PathSmoother, OdometryToldExactIsKept)

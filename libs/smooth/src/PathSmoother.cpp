@@ -11,6 +11,7 @@
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace whiskermap::smooth
 {
@@ -114,8 +115,9 @@ struct Problem
 	}
 };
 
-/** Eq. S4's factors for the legs the map holds twice, by the contacts first tied. */
-std::vector<SameLegFactor> sameLegs(
+/** Eq. S4's factors for the legs the map holds twice, by the contacts first tied, in sets by
+ *  the two mapped tables they pair (a table mapped twice), largest first. */
+std::vector<std::vector<SameLegFactor>> sameLegs(
 	const std::vector<world::Obstacle>& solids, const std::vector<size_t>& groupOf,
 	const std::vector<ContactFactor>& contacts, const TSmoothParams& params)
 {
@@ -125,10 +127,15 @@ std::vector<SameLegFactor> sameLegs(
 		const auto& c = solids[k].corners;
 		return Eigen::Vector2d((c[0] + c[1] + c[2] + c[3]) / 4);
 	};
-	std::vector<SameLegFactor> same;
+	std::map<std::pair<int, int>, std::vector<SameLegFactor>> byTables;
 	for (const auto& [i, j] : DuplicateLegs::find(solids, touched, params.duplicate_shrink, params.duplicate_distance))
-		if (groupOf[i] != groupOf[j]) same.push_back({groupOf[i], groupOf[j], centre(i) - centre(j), params.duplicate_sigma});
-	return same;
+		if (groupOf[i] != groupOf[j])
+			byTables[std::minmax(solids[i].table, solids[j].table)].push_back(
+				{groupOf[i], groupOf[j], centre(i) - centre(j), params.duplicate_sigma});
+	std::vector<std::vector<SameLegFactor>> sets;
+	for (auto& [tables, set] : byTables) sets.push_back(std::move(set));
+	std::stable_sort(sets.begin(), sets.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+	return sets;
 }
 
 /** Ties every contact seen from x to the nearest face of the shifted solids (pb.contacts). */
@@ -256,29 +263,35 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 
 	// Eq. S4's pairs, from the contacts the start ties.
 	tieContacts(pb, start, in, solids, out.groupOf, params);
-	if (params.duplicate_sigma > 0) pb.same = sameLegs(solids, out.groupOf, pb.contacts, params);
+	const auto sets = params.duplicate_sigma > 0 ? sameLegs(solids, out.groupOf, pb.contacts, params)
+												  : std::vector<std::vector<SameLegFactor>>{};
+	size_t pairs = 0;
+	for (const auto& set : sets) pairs += set.size();
+	// The pairs are hypotheses (the copies are one leg): on a drifted map some are wrong, and
+	// holding them bends the path. Each set (a table mapped twice) is kept when the solution
+	// holding it with the sets kept so far costs no more than the one without, over every
+	// contact either tied (unionCost), plus 4 a pair left apart (Akaike: each pair held takes a
+	// leg's two coordinates out of the model); largest sets first, each solved from the start
+	// (eq. S6).
 	State x = solve(pb, start, in, solids, params, out);
-	// The pairs are a hypothesis (the copies are one leg): on a drifted map some are wrong, and
-	// holding them bends the path. They are kept when the solution holding them costs no more
-	// than the one leaving them apart, over every contact either tied (unionCost), plus 4 a pair
-	// (Akaike: each pair held takes a leg's two coordinates out of the model).
-	if (!pb.same.empty())
+	auto ties = pb.contacts;
+	const auto penalty = [&](size_t held) { return 4.0 * static_cast<double>(pairs - held); };
+	for (const auto& set : sets)
 	{
-		auto same = std::move(pb.same);
-		pb.same.clear();
-		const auto heldTies = pb.contacts;
-		TResult apart = out;
-		State y = solve(pb, start, in, solids, params, apart);
-		const double apartCost = unionCost(pb, y, heldTies, in.contacts.size(), params.gate);
-		const auto apartTies = std::move(pb.contacts);
-		pb.contacts = heldTies, pb.same = std::move(same);
-		const double heldCost = unionCost(pb, x, apartTies, in.contacts.size(), params.gate);
-		if (apartCost + 4.0 * static_cast<double>(pb.same.size()) < heldCost)  // eq. S6
-		{
-			x = std::move(y), out = apart, out.duplicatesApart = pb.same.size();
-			pb.same.clear();
-		}
+		auto trial = pb.same;
+		trial.insert(trial.end(), set.begin(), set.end());
+		auto kept = std::move(pb.same);
+		pb.same = trial;
+		TResult r = out;
+		State y = solve(pb, start, in, solids, params, r);
+		const double with = unionCost(pb, y, ties, in.contacts.size(), params.gate) + penalty(trial.size());
+		auto trialTies = std::move(pb.contacts);
+		pb.contacts = ties, pb.same = std::move(kept);
+		const double without = unionCost(pb, x, trialTies, in.contacts.size(), params.gate) + penalty(pb.same.size());
+		if (with <= without)  // eq. S6
+			x = std::move(y), out = r, ties = std::move(trialTies), pb.same = std::move(trial);
 	}
+	out.duplicatesApart = pairs - pb.same.size();
 	tieContacts(pb, start, in, solids, out.groupOf, params);
 	out.costBefore = pb.cost(start);  // with the first round's ties and the pairs kept
 	return finish(std::move(x));

@@ -21,8 +21,9 @@ namespace whiskermap::smooth
  *  map's solids (ContactFactor::associate) at the start of each round, from the current
  *  estimate; a contact near no face is left out (it belongs to nothing the map holds). Legs
  *  the map holds twice (DuplicateLegs: a table mapped again after the path drifted) are held
- *  to one place (SameLegFactor), which closes the loop the particle left open, unless the
- *  solution holding them costs more than the one leaving them apart (eq. S6). Odometry told
+ *  to one place (SameLegFactor), which closes the loop the particle left open; each table
+ *  mapped twice is held only if the solution holding it costs no more than the one leaving
+ *  it apart (eq. S6). Odometry told
  *  exact (every increment's covariance zero) leaves nothing to estimate: the path is the
  *  odometry's chain from the start. */
 class PathSmoother
