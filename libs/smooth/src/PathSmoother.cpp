@@ -263,7 +263,8 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 
 	// Eq. S4's pairs, from the contacts the start ties.
 	tieContacts(pb, start, in, solids, out.groupOf, params);
-	const auto sets = params.duplicate_sigma > 0 ? sameLegs(solids, out.groupOf, pb.contacts, params)
+	const auto startTies = pb.contacts;
+	const auto sets = params.duplicate_sigma > 0 ? sameLegs(solids, out.groupOf, startTies, params)
 												  : std::vector<std::vector<SameLegFactor>>{};
 	size_t pairs = 0;
 	for (const auto& set : sets) pairs += set.size();
@@ -275,24 +276,24 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	// (eq. S6).
 	State x = solve(pb, start, in, solids, params, out);
 	auto ties = pb.contacts;
-	const auto penalty = [&](size_t held) { return 4.0 * static_cast<double>(pairs - held); };
+	std::vector<SameLegFactor> held;  // the sets kept so far
+	const auto penalty = [&](size_t kept) { return 4.0 * static_cast<double>(pairs - kept); };
 	for (const auto& set : sets)
 	{
-		auto trial = pb.same;
+		auto trial = held;
 		trial.insert(trial.end(), set.begin(), set.end());
-		auto kept = std::move(pb.same);
 		pb.same = trial;
 		TResult r = out;
 		State y = solve(pb, start, in, solids, params, r);
+		auto trialTies = pb.contacts;
 		const double with = unionCost(pb, y, ties, in.contacts.size(), params.gate) + penalty(trial.size());
-		auto trialTies = std::move(pb.contacts);
-		pb.contacts = ties, pb.same = std::move(kept);
-		const double without = unionCost(pb, x, trialTies, in.contacts.size(), params.gate) + penalty(pb.same.size());
+		pb.same = held, pb.contacts = ties;
+		const double without = unionCost(pb, x, trialTies, in.contacts.size(), params.gate) + penalty(held.size());
 		if (with <= without)  // eq. S6
-			x = std::move(y), out = r, ties = std::move(trialTies), pb.same = std::move(trial);
+			x = std::move(y), out = r, ties = std::move(trialTies), held = std::move(trial);
 	}
+	pb.same = std::move(held), pb.contacts = startTies;
 	out.duplicatesApart = pairs - pb.same.size();
-	tieContacts(pb, start, in, solids, out.groupOf, params);
 	out.costBefore = pb.cost(start);  // with the first round's ties and the pairs kept
 	return finish(std::move(x));
 }
