@@ -59,6 +59,31 @@ TEST(TSlamParams, ShippedConfigLoads)
 	EXPECT_EQ(p.wall_extension, 0.3);
 }
 
+// config/whisker-slam-100.ini is the shipped config with 100 particles in batches of 4: every
+// other [slam] setting the same (a change to one file must reach the other; [smooth]:
+// TSmoothParams_unittest).
+TEST(TSlamParams, HundredParticleConfigDiffersOnlyInCountAndBatch)
+{
+	const std::string hundred = SRC + "/config/whisker-slam-100.ini";
+	const auto a = slam::TSlamParams::load(SLAM_INI), b = slam::TSlamParams::load(hundred);
+	EXPECT_EQ(a.batch_sweeps, 2u);
+	EXPECT_EQ(b.particles, 100u);
+	EXPECT_EQ(b.batch_sweeps, 4u);
+	EXPECT_EQ(a.seed, b.seed);
+	EXPECT_EQ(a.map_config, b.map_config);
+	EXPECT_EQ(a.motion.translation_noise, b.motion.translation_noise);
+	EXPECT_EQ(a.motion.rotation_noise, b.motion.rotation_noise);
+	EXPECT_EQ(a.motion.turn_noise, b.motion.turn_noise);
+	EXPECT_EQ(a.motion.scale_bias, b.motion.scale_bias);
+	EXPECT_EQ(a.motion_noise_scale, b.motion_noise_scale);
+	EXPECT_EQ(a.proposal_samples, b.proposal_samples);
+	EXPECT_EQ(a.manhattan_walls, b.manhattan_walls);
+	EXPECT_EQ(a.wall_axis, b.wall_axis);
+	EXPECT_EQ(a.wall_extension, b.wall_extension);
+	EXPECT_EQ(a.resample_ess, b.resample_ess);
+	EXPECT_EQ(a.resampling, b.resampling);
+}
+
 TEST_F(TSlamParamsTest, StrictKeysAndValues)
 {
 	EXPECT_NO_THROW(slam::TSlamParams::load(ini("[slam]\nodometry_model = poor\nresampling = residual\n")));

@@ -69,3 +69,24 @@ TEST_F(TSmoothParamsTest, BadValuesAndUnknownKeysNameTheFileAndKey)
 	EXPECT_THROW(smooth::TSmoothParams::load(ini("[smooth]\npasses = 0\n")), core::Error);
 	EXPECT_THROW(smooth::TSmoothParams::load(path("missing.ini")), core::Error);
 }
+
+// config/whisker-slam-100.ini (100 particles in batches of 4) smooths as config/whisker-slam.ini.
+TEST(TSmoothParams, HundredParticleConfigSmoothsAsTheShippedOne)
+{
+	const std::string src = WHISKERMAP_SOURCE_DIR;
+	const auto s = smooth::TSmoothParams::load(src + "/config/whisker-slam.ini");
+	const auto t = smooth::TSmoothParams::load(src + "/config/whisker-slam-100.ini");
+	EXPECT_EQ(s.enabled, t.enabled);
+	EXPECT_EQ(s.gate, t.gate);
+	EXPECT_EQ(s.normal_gate, t.normal_gate);
+	EXPECT_EQ(s.position_floor, t.position_floor);
+	EXPECT_EQ(s.huber, t.huber);
+	EXPECT_EQ(s.wall_merge, t.wall_merge);
+	EXPECT_EQ(s.duplicate_sigma, t.duplicate_sigma);
+	EXPECT_EQ(s.duplicate_shrink, t.duplicate_shrink);
+	EXPECT_EQ(s.duplicate_distance, t.duplicate_distance);
+	EXPECT_EQ(s.solid_sigma, t.solid_sigma);
+	EXPECT_EQ(s.rounds, t.rounds);
+	EXPECT_EQ(s.iterations, t.iterations);
+	EXPECT_EQ(s.passes, t.passes);
+}

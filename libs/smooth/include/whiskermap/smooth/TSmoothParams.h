@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <string>
 
 namespace whiskermap::smooth
@@ -9,7 +10,7 @@ struct TSmoothParams
 {
 	bool enabled = true;  ///< smooth the best particle's path (off: the filter's path is the estimate)
 	double gate = 0.04;  ///< metres: a contact is tied to the nearest face of a mapped solid within this
-	double normal_gate = 0.7854;  ///< radians (key normal_gate_deg): its normal within this of the face's
+	double normal_gate = M_PI / 4;  ///< radians (key normal_gate_deg, 45): its normal within this of the face's
 	double position_floor = 0.002;  ///< metres, added (in quadrature) to a contact's std-dev across its face
 	double huber = 2;  ///< Huber's loss beyond this many std-devs (contacts)
 	/** Metres: pieces of walls on parallel lines within this of each other are one wall

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# check_whisker_slam_100.sh WHISKER_SLAM WHISKER_EVAL SRC_DIR WORK_DIR: whisker-slam with the
+# shipped config/whisker-slam-100.ini (100 particles, every particle's map annealing 4 sweeps
+# together) on a prefix of the shipped default-odometry random_yaw1 log (datasets/slam/): it
+# runs that many particles in batches of 4 and its smoothed path stays within a stated floor of
+# the truth (doc/slam.md, "100 particles in batches of 4").
+set -euo pipefail
+trap 'echo "FAIL: line $LINENO: $BASH_COMMAND (exit $?)"' ERR
+slam=$1 eval=$2 src=$3 work=$4
+rm -rf "$work"; mkdir -p "$work"
+data="$src/datasets/slam/random_yaw1_obs"
+# The first 300 sweeps (15 m: the first three rows, three tables touched), filter seed 1.
+sweeps=300
+"$slam" -q -c "$src/config/whisker-slam-100.ini" -i "$data.rawlog" -o "$work/a" --sweeps $sweeps --seed 1 ||
+  { rc=$?; echo "FAIL: whisker-slam exited with $rc"; exit 1; }
+python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); assert s["particles"] == 100 and s["batch_sweeps"] == 4, s' \
+  "$work/a/summary.json" || { echo "FAIL: summary.json: not 100 particles in batches of 4"; exit 1; }
+awk -v n=$sweeps '!/^%/ && k++ < n' "${data}_ground_truth_robot_path.txt" > "$work/truth_prefix.txt"
+ate() { "$eval" --path "$1" --truth "$work/truth_prefix.txt" --json | sed -n 's/.*"ate_rmse_m": \([0-9.]*\).*/\1/p'; }
+est=$(ate "$work/a/estimated_path.txt") odo=$(ate "$work/a/odometry_path.txt") filt=$(ate "$work/a/filter_path.txt")
+echo "ATE RMSE over the first $sweeps sweeps: SLAM $est m (best particle $filt m), odometry $odo m"
+# Measured 2026-12-05 (this prefix): seed 1 0.033 m, seeds 2-5 0.025-0.032 m, the best particle
+# 0.098 m, the odometry 0.187 m. Asserted: the smoothed path's ATE below
+# 4 cm (issue 9's worst case is 6 cm over a whole log) and at most a quarter of the odometry's.
+awk -v e="$est" -v o="$odo" 'BEGIN { exit !(e > 0 && e < 0.04 && e <= 0.25 * o) }' ||
+  { echo "FAIL: SLAM ATE $est m (odometry $odo m)"; exit 1; }
+echo "ok: 100 particles in batches of 4 keep track"
