@@ -2,7 +2,7 @@
 #include <whiskermap/core/Angles.h>
 #include <whiskermap/smooth/ContactFactor.h>
 #include <whiskermap/smooth/OdometryFactor.h>
-#include <whiskermap/smooth/SameLegFactor.h>
+#include <whiskermap/smooth/SameSolidFactor.h>
 
 #include <Eigen/Geometry>
 
@@ -67,12 +67,25 @@ TEST(OdometryFactor, JacobiansMatchCentralDifferences)
 	EXPECT_LT((Jb - nb).cwiseAbs().maxCoeff(), 1e-4 * Jb.cwiseAbs().maxCoeff());
 }
 
-TEST(SameLegFactor, ZeroWhenTheShiftedCentresCoincide)
+TEST(SameSolidFactor, ALegIsZeroWhenTheShiftedCentresCoincide)
 {
-	const smooth::SameLegFactor f{0, 1, Eigen::Vector2d(0.1, -0.05), 0.005};  // c_a - c_b
+	const smooth::SameSolidFactor f{0, 1, Eigen::Vector2d(0.1, -0.05), 0.005};  // c_a - c_b
+	EXPECT_EQ(f.dof(), 2);
 	EXPECT_GT(f.residual(Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()).norm(), 20);
 	EXPECT_LT(f.residual(Eigen::Vector2d(-0.04, 0.02), Eigen::Vector2d(0.06, -0.03)).norm(), 1e-12);  // eq. S4
 	EXPECT_NEAR(f.residual(Eigen::Vector2d(0.005, 0), Eigen::Vector2d(0.1, -0.05))[0], 1, 1e-12);  // one std-dev
+}
+
+TEST(SameSolidFactor, AWallIsHeldAcrossOnly)
+{
+	// Two pieces of a wall along x, 0.25 m apart across (y) and 1 m apart along it.
+	const Eigen::Vector2d n(0, 1);
+	smooth::SameSolidFactor f{0, 1, Eigen::Vector2d(-1, 0.25), 0.005};
+	f.P = n * n.transpose();
+	EXPECT_EQ(f.dof(), 1);
+	EXPECT_NEAR(f.residual(Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()).norm(), 50, 1e-9);
+	EXPECT_LT(f.residual(Eigen::Vector2d(0.3, -0.25), Eigen::Vector2d::Zero()).norm(), 1e-12);  // eq. S5: along is free
+	EXPECT_NEAR(f.residual(Eigen::Vector2d(0, -0.245), Eigen::Vector2d::Zero()).norm(), 1, 1e-9);
 }
 
 TEST(ContactFactor, TiesAContactToTheFaceItTouches)

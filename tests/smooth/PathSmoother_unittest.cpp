@@ -175,6 +175,32 @@ TEST(PathSmoother, ALegMappedTwiceIsHeldToOnePlace)
 	EXPECT_GT(Corridor::worst(alone.path, c.truth), 0.01);
 }
 
+TEST(PathSmoother, AWallMappedTwiceIsHeldToOneLine)
+{
+	// ALegMappedTwiceIsHeldToOnePlace with the end wall itself: the second half of the path
+	// drifted 3 cm along x across the blind step and mapped the end wall a second time, 3 cm
+	// further (every piece its own group: wall_merge 0). DuplicateWalls pairs the two pieces
+	// (parallel, overlapping, touched from the same side); held to one line (eq. S5), the path
+	// is the truth; left apart, the copy and the second half share the 3 cm.
+	Corridor c;
+	c.blindStep(c.in.covariances[1]);
+	c.in.solids[1] = world::Obstacle::rectangle({2.45, 0}, M_PI / 2, 1, 0.05, 0.5);  // face at x = 2.4
+	c.in.solids.push_back(world::Obstacle::rectangle({2.48, 0}, M_PI / 2, 1, 0.05, 0.5));  // the copy: x = 2.43
+	smooth::TSmoothParams p;
+	p.wall_merge = 0;
+	const auto held = PathSmoother::run(c.in, p);
+	EXPECT_EQ(held.duplicateWalls, 1u);
+	EXPECT_EQ(held.duplicateWallsApart, 0u);
+	EXPECT_EQ(held.duplicates, 0u);
+	EXPECT_EQ(held.tied, c.in.contacts.size());
+	EXPECT_LT(Corridor::worst(held.path, c.truth), 0.001);
+	EXPECT_NEAR(2.4 + held.shifts[held.groupOf[1]].x(), 2.43 + held.shifts[held.groupOf[2]].x(), 0.001);
+	p.duplicate_wall_distance = 0;
+	const auto alone = PathSmoother::run(c.in, p);
+	EXPECT_EQ(alone.duplicateWalls + alone.duplicateWallsApart, 0u);
+	EXPECT_GT(Corridor::worst(alone.path, c.truth), 0.01);
+}
+
 TEST(PathSmoother, LegsOfTwoTablesSideBySideAreLeftApart)
 {
 	// The corridor with odometry good to 0.1 mm a step, the end wall replaced by two real

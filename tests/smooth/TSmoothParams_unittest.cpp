@@ -31,7 +31,7 @@ TEST_F(TSmoothParamsTest, DefaultsWithoutTheSectionAndEveryKeyRead)
 	const auto p = smooth::TSmoothParams::load(ini(
 		"[smooth]\nenabled = false\ngate = 0.1\nnormal_gate_deg = 30\nposition_floor = 0.003\nhuber = 1.5\n"
 		"solid_sigma = 2\nrounds = 3\niterations = 7\npasses = 2\nduplicate_sigma = 0.01\nduplicate_shrink = 0.2\n"
-		"duplicate_distance = 0.05\n"));
+		"duplicate_distance = 0.05\nduplicate_wall_distance = 0.2\n"));
 	EXPECT_FALSE(p.enabled);
 	EXPECT_DOUBLE_EQ(p.gate, 0.1);
 	EXPECT_NEAR(p.normal_gate, M_PI / 6, 1e-12);
@@ -44,6 +44,7 @@ TEST_F(TSmoothParamsTest, DefaultsWithoutTheSectionAndEveryKeyRead)
 	EXPECT_DOUBLE_EQ(p.duplicate_sigma, 0.01);
 	EXPECT_DOUBLE_EQ(p.duplicate_shrink, 0.2);
 	EXPECT_DOUBLE_EQ(p.duplicate_distance, 0.05);
+	EXPECT_DOUBLE_EQ(p.duplicate_wall_distance, 0.2);
 }
 
 TEST_F(TSmoothParamsTest, BadValuesAndUnknownKeysNameTheFileAndKey)
@@ -85,6 +86,7 @@ TEST(TSmoothParams, HundredParticleConfigSmoothsAsTheShippedOne)
 	EXPECT_EQ(s.duplicate_sigma, t.duplicate_sigma);
 	EXPECT_EQ(s.duplicate_shrink, t.duplicate_shrink);
 	EXPECT_EQ(s.duplicate_distance, t.duplicate_distance);
+	EXPECT_EQ(s.duplicate_wall_distance, t.duplicate_wall_distance);
 	EXPECT_EQ(s.solid_sigma, t.solid_sigma);
 	EXPECT_EQ(s.rounds, t.rounds);
 	EXPECT_EQ(s.iterations, t.iterations);

@@ -2,9 +2,10 @@
 #include <whiskermap/core/Error.h>
 #include <whiskermap/smooth/ContactFactor.h>
 #include <whiskermap/smooth/DuplicateLegs.h>
+#include <whiskermap/smooth/DuplicateWalls.h>
 #include <whiskermap/smooth/OdometryFactor.h>
 #include <whiskermap/smooth/PathSmoother.h>
-#include <whiskermap/smooth/SameLegFactor.h>
+#include <whiskermap/smooth/SameSolidFactor.h>
 #include <whiskermap/smooth/WallLines.h>
 
 #include <Eigen/SparseCholesky>
@@ -30,7 +31,7 @@ struct Problem
 {
 	const std::vector<OdometryFactor>& odometry;
 	std::vector<ContactFactor> contacts;
-	std::vector<SameLegFactor> same;
+	std::vector<SameSolidFactor> same;
 	size_t poses, groups;
 	double huber, solidSigma;
 	double outlier = 0;  ///< metres: a contact farther than this from its face costs as if this far (0: no cap)
@@ -59,7 +60,7 @@ struct Problem
 			const double l = loss(f.residual(x[f.pose], d[f.group]));  // eq. S3
 			c += outlier > 0 ? std::min(l, loss(outlier / f.sigma)) : l;
 		}
-		for (const auto& f : same) c += f.residual(d[f.a], d[f.b]).squaredNorm();  // eq. S4
+		for (const auto& f : same) c += f.residual(d[f.a], d[f.b]).squaredNorm();  // eqs. S4, S5
 		for (const auto& g : d) c += g.squaredNorm() / (solidSigma * solidSigma);
 		return c;
 	}
@@ -104,10 +105,10 @@ struct Problem
 			add(Eigen::Matrix<double, 1, 1>(r), w, make_pair(poseColumn(f.pose), Eigen::RowVector3d(Jx.transpose())),
 				make_pair(groupColumn(f.group), Eigen::RowVector2d(Jd.transpose())));
 		}
-		const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
 		for (const auto& f : same)
-			add(f.residual(d[f.a], d[f.b]), 1, make_pair(groupColumn(f.a), Eigen::Matrix2d(I / f.sigma)),
-				make_pair(groupColumn(f.b), Eigen::Matrix2d(-I / f.sigma)));
+			add(f.residual(d[f.a], d[f.b]), 1, make_pair(groupColumn(f.a), Eigen::Matrix2d(f.P / f.sigma)),
+				make_pair(groupColumn(f.b), Eigen::Matrix2d(-f.P / f.sigma)));
+		const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
 		for (size_t g = 0; g < groups; g++)
 			add(Eigen::Vector2d(d[g] / solidSigma), 1, make_pair(groupColumn(g), Eigen::Matrix2d(I / solidSigma)));
 		H.resize(static_cast<long>(size()), static_cast<long>(size()));
@@ -115,27 +116,40 @@ struct Problem
 	}
 };
 
-/** Eq. S4's factors for the legs the map holds twice, by the contacts first tied, in sets by
- *  the two mapped tables they pair (a table mapped twice), largest first. */
-std::vector<std::vector<SameLegFactor>> sameLegs(
-	const std::vector<world::Obstacle>& solids, const std::vector<size_t>& groupOf,
+/** The hypotheses that two mapped solids are one, from the contacts first tied: eq. S4's
+ *  factors for the legs the map holds twice, in sets by the two mapped tables they pair (a table
+ *  mapped twice), largest first; then eq. S5's for each wall it holds twice, one set each. */
+std::vector<std::vector<SameSolidFactor>> sameSolids(
+	const std::vector<world::Obstacle>& solids, const std::vector<size_t>& groupOf, size_t groups,
 	const std::vector<ContactFactor>& contacts, const TSmoothParams& params)
 {
 	std::vector<bool> touched(solids.size(), false);
-	for (const auto& f : contacts) touched[f.solid] = true;
+	std::vector<Eigen::Vector2d> facing(groups, Eigen::Vector2d::Zero());
+	for (const auto& f : contacts) touched[f.solid] = true, facing[f.group] += f.n;
 	const auto centre = [&](size_t k) {
 		const auto& c = solids[k].corners;
 		return Eigen::Vector2d((c[0] + c[1] + c[2] + c[3]) / 4);
 	};
-	std::map<std::pair<int, int>, std::vector<SameLegFactor>> byTables;
+	std::map<std::pair<int, int>, std::vector<SameSolidFactor>> byTables;
 	for (const auto& [i, j] : DuplicateLegs::find(solids, touched, params.duplicate_shrink, params.duplicate_distance))
 		if (groupOf[i] != groupOf[j])
 			byTables[std::minmax(solids[i].table, solids[j].table)].push_back(
 				{groupOf[i], groupOf[j], centre(i) - centre(j), params.duplicate_sigma});
-	std::vector<std::vector<SameLegFactor>> sets;
+	std::vector<std::vector<SameSolidFactor>> sets;
 	for (auto& [tables, set] : byTables) sets.push_back(std::move(set));
 	std::stable_sort(sets.begin(), sets.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+	if (params.duplicate_wall_distance > 0)
+		for (const auto& w : DuplicateWalls::find(solids, groupOf, facing, params.duplicate_wall_distance))
+			sets.push_back({{w.a, w.b, w.offset, params.duplicate_sigma, w.normal * w.normal.transpose()}});
 	return sets;
+}
+
+/** The coordinates the factors hold (SameSolidFactor::dof). */
+double dof(const std::vector<SameSolidFactor>& factors)
+{
+	double k = 0;
+	for (const auto& f : factors) k += f.dof();
+	return k;
 }
 
 /** Ties every contact seen from x to the nearest face of the shifted solids (pb.contacts). */
@@ -247,7 +261,7 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	const State start{in.path, std::vector<Eigen::Vector2d>(groups, Eigen::Vector2d::Zero())};
 	Problem pb{odometry, {}, {}, n, groups, params.huber, params.solid_sigma};
 	const auto finish = [&](State x) {
-		out.duplicates = pb.same.size();
+		out.duplicates = pb.same.size() - out.duplicateWalls;
 		out.path = std::move(x.path), out.shifts = std::move(x.shifts);
 		return out;
 	};
@@ -261,23 +275,23 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 		return finish(x);
 	}
 
-	// Eq. S4's pairs, from the contacts the start ties.
+	// Eqs. S4 and S5's pairs, from the contacts the start ties.
 	tieContacts(pb, start, in, solids, out.groupOf, params);
 	const auto startTies = pb.contacts;
-	const auto sets = params.duplicate_sigma > 0 ? sameLegs(solids, out.groupOf, startTies, params)
-												  : std::vector<std::vector<SameLegFactor>>{};
-	size_t pairs = 0;
-	for (const auto& set : sets) pairs += set.size();
-	// The pairs are hypotheses (the copies are one leg): on a drifted map some are wrong, and
-	// holding them bends the path. Each set (a table mapped twice) is kept when the solution
-	// holding it with the sets kept so far costs no more than the one without, over every
-	// contact either tied (unionCost), plus 4 a pair left apart (Akaike: each pair held takes a
-	// leg's two coordinates out of the model); largest sets first, each solved from the start
-	// (eq. S6).
+	const auto sets = params.duplicate_sigma > 0 ? sameSolids(solids, out.groupOf, groups, startTies, params)
+												  : std::vector<std::vector<SameSolidFactor>>{};
+	double all = 0;
+	for (const auto& set : sets) all += dof(set);
+	// The pairs are hypotheses (the copies are one leg, one wall): on a drifted map some are
+	// wrong, and holding them bends the path. Each set (a table or a wall mapped twice) is kept
+	// when the solution holding it with the sets kept so far costs no more than the one without,
+	// over every contact either tied (unionCost), plus 2 a coordinate left apart (Akaike: a leg
+	// held takes two coordinates out of the model, a wall one); largest sets first, each solved
+	// from the start (eq. S6).
 	State x = solve(pb, start, in, solids, params, out);
 	auto ties = pb.contacts;
-	std::vector<SameLegFactor> held;  // the sets kept so far
-	const auto penalty = [&](size_t kept) { return 4.0 * static_cast<double>(pairs - kept); };
+	std::vector<SameSolidFactor> held;  // the sets kept so far
+	const auto penalty = [&](const std::vector<SameSolidFactor>& kept) { return 2 * (all - dof(kept)); };
 	for (const auto& set : sets)
 	{
 		auto trial = held;
@@ -286,14 +300,21 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 		TResult r = out;
 		State y = solve(pb, start, in, solids, params, r);
 		auto trialTies = pb.contacts;
-		const double with = unionCost(pb, y, ties, in.contacts.size(), params.gate) + penalty(trial.size());
+		const double with = unionCost(pb, y, ties, in.contacts.size(), params.gate) + penalty(trial);
 		pb.same = held, pb.contacts = ties;
-		const double without = unionCost(pb, x, trialTies, in.contacts.size(), params.gate) + penalty(held.size());
+		const double without = unionCost(pb, x, trialTies, in.contacts.size(), params.gate) + penalty(held);
 		if (with <= without)  // eq. S6
 			x = std::move(y), out = r, ties = std::move(trialTies), held = std::move(trial);
 	}
 	pb.same = std::move(held), pb.contacts = startTies;
-	out.duplicatesApart = pairs - pb.same.size();
+	const auto walls = [](const std::vector<SameSolidFactor>& f) {
+		return static_cast<size_t>(std::count_if(f.begin(), f.end(), [](const SameSolidFactor& k) { return k.dof() < 2; }));
+	};
+	size_t found = 0, foundWalls = 0;
+	for (const auto& set : sets) found += set.size(), foundWalls += walls(set);
+	out.duplicateWalls = walls(pb.same);
+	out.duplicateWallsApart = foundWalls - out.duplicateWalls;
+	out.duplicatesApart = found - foundWalls - (pb.same.size() - out.duplicateWalls);
 	out.costBefore = pb.cost(start);  // with the first round's ties and the pairs kept
 	return finish(std::move(x));
 }

@@ -16,14 +16,14 @@ namespace whiskermap::smooth
  *  shifts instead: the path's poses (the first fixed: the known start) and a shift per
  *  solid group (each leg alone, the pieces of one straight wall together: WallLines) minimise
  *    sum |odometry residuals|^2 (eq. S2) + sum huber(contact residuals) (eq. S3)
- *      + sum |same-leg residuals|^2 (eq. S4) + sum |d / solid_sigma|^2,
+ *      + sum |same-solid residuals|^2 (eqs. S4, S5) + sum |d / solid_sigma|^2,
  *  by Levenberg-Marquardt on the sparse normal equations. Contacts are tied to faces of the
  *  map's solids (ContactFactor::associate) at the start of each round, from the current
  *  estimate; a contact near no face is left out (it belongs to nothing the map holds). Legs
  *  the map holds twice (DuplicateLegs: a table mapped again after the path drifted) are held
- *  to one place (SameLegFactor), which closes the loop the particle left open; each table
- *  mapped twice is held only if the solution holding it costs no more than the one leaving
- *  it apart (eq. S6). Odometry told exact (every increment's covariance zero) leaves
+ *  to one place, and walls it holds twice (DuplicateWalls) to one line (SameSolidFactor),
+ *  which closes the loop the particle left open; each table or wall mapped twice is held only
+ *  if the solution holding it costs no more than the one leaving it apart (eq. S6). Odometry told exact (every increment's covariance zero) leaves
  *  nothing to estimate: the path is the odometry's chain from the start. */
 class PathSmoother
 {
@@ -43,6 +43,8 @@ class PathSmoother
 		std::vector<size_t> groupOf;  ///< per solid
 		size_t duplicates = 0;  ///< pairs of legs held to one place (eq. S4; DuplicateLegs)
 		size_t duplicatesApart = 0;  ///< pairs found but left apart: holding them cost more (eq. S6)
+		size_t duplicateWalls = 0;  ///< pairs of wall groups held to one line (eq. S5; DuplicateWalls)
+		size_t duplicateWallsApart = 0;  ///< wall pairs found but left apart (eq. S6)
 		size_t tied = 0;  ///< contacts tied to a face in the last round (of contacts.size())
 		double costBefore = 0, costAfter = 0;  ///< the objective at the start path (first round's ties) and at the end
 		unsigned rounds = 0, iterations = 0;

@@ -24,6 +24,9 @@ struct TSmoothParams
 	double duplicate_shrink = 0.1;
 	/** Metres: touched legs of two mapped tables whose centres lie this close are one leg. */
 	double duplicate_distance = 0.08;
+	/** Metres: parallel walls touched from the same side, overlapping along and at most this
+	 *  far apart across, are one wall (DuplicateWalls; eq. S5; 0: never). */
+	double duplicate_wall_distance = 0.3;
 	double solid_sigma = 1;  ///< metres: prior std-dev of each solid's shift (walls slide along themselves)
 	unsigned rounds = 6;  ///< association rounds (each re-ties the contacts, then solves)
 	unsigned iterations = 10;  ///< Levenberg-Marquardt iterations per round, at most
