@@ -1,4 +1,5 @@
 #include <whiskermap/smooth/DuplicateWalls.h>
+#include <whiskermap/smooth/WallLines.h>
 
 #include <algorithm>
 #include <cmath>
@@ -25,18 +26,11 @@ std::vector<DuplicateWalls::TPair> DuplicateWalls::find(
 	for (size_t i = 0; i < solids.size(); i++)
 	{
 		if (solids[i].table >= 0) continue;
+		const auto angle = WallLines::direction(solids[i]);
+		if (!angle) continue;
 		const auto& c = solids[i].corners;
-		Eigen::Vector2d axis = c[1] - c[0];
-		if ((c[2] - c[1]).norm() > axis.norm()) axis = c[2] - c[1];
-		if (axis.norm() <= 0) continue;
 		auto& l = lines[groupOf[i]];
-		if (!l.wall)
-		{
-			l.wall = true, l.angle = std::atan2(axis.y(), axis.x());
-			if (l.angle < 0) l.angle += M_PI;
-			if (l.angle >= M_PI) l.angle -= M_PI;
-			l.u = {std::cos(l.angle), std::sin(l.angle)}, l.point = (c[0] + c[2]) / 2;
-		}
+		if (!l.wall) l.wall = true, l.angle = *angle, l.u = {std::cos(*angle), std::sin(*angle)}, l.point = (c[0] + c[2]) / 2;
 		for (const auto& q : c) l.lo = std::min(l.lo, l.u.dot(q)), l.hi = std::max(l.hi, l.u.dot(q));
 	}
 	std::vector<TPair> pairs;
@@ -45,8 +39,7 @@ std::vector<DuplicateWalls::TPair> DuplicateWalls::find(
 		{
 			const Line &A = lines[a], &B = lines[b];
 			if (!A.wall || !B.wall || facing[a].isZero() || facing[b].isZero()) continue;
-			const double turn = std::abs(A.angle - B.angle);
-			if (std::min(turn, M_PI - turn) > M_PI / 180) continue;
+			if (!WallLines::parallel(A.angle, B.angle)) continue;
 			const Eigen::Vector2d n(-A.u.y(), A.u.x());
 			// Touched on their long faces, from the same side.
 			if (std::abs(n.dot(facing[a])) < 0.5 * facing[a].norm() || std::abs(n.dot(facing[b])) < 0.5 * facing[b].norm() ||

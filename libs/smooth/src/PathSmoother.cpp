@@ -261,7 +261,6 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	const State start{in.path, std::vector<Eigen::Vector2d>(groups, Eigen::Vector2d::Zero())};
 	Problem pb{odometry, {}, {}, n, groups, params.huber, params.solid_sigma};
 	const auto finish = [&](State x) {
-		out.duplicates = pb.same.size() - out.duplicateWalls;
 		out.path = std::move(x.path), out.shifts = std::move(x.shifts);
 		return out;
 	};
@@ -306,15 +305,11 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 		if (with <= without)  // eq. S6
 			x = std::move(y), out = r, ties = std::move(trialTies), held = std::move(trial);
 	}
+	for (const auto& f : held) (f.dof() < 2 ? out.duplicateWalls : out.duplicates)++;
+	for (const auto& set : sets)
+		for (const auto& f : set) (f.dof() < 2 ? out.duplicateWallsApart : out.duplicatesApart)++;
+	out.duplicatesApart -= out.duplicates, out.duplicateWallsApart -= out.duplicateWalls;
 	pb.same = std::move(held), pb.contacts = startTies;
-	const auto walls = [](const std::vector<SameSolidFactor>& f) {
-		return static_cast<size_t>(std::count_if(f.begin(), f.end(), [](const SameSolidFactor& k) { return k.dof() < 2; }));
-	};
-	size_t found = 0, foundWalls = 0;
-	for (const auto& set : sets) found += set.size(), foundWalls += walls(set);
-	out.duplicateWalls = walls(pb.same);
-	out.duplicateWallsApart = foundWalls - out.duplicateWalls;
-	out.duplicatesApart = found - foundWalls - (pb.same.size() - out.duplicateWalls);
 	out.costBefore = pb.cost(start);  // with the first round's ties and the pairs kept
 	return finish(std::move(x));
 }

@@ -1,5 +1,6 @@
 #include <whiskermap/smooth/WallLines.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -23,32 +24,44 @@ size_t find(std::vector<size_t>& parent, size_t i)
 }
 }  // namespace
 
+std::optional<double> WallLines::direction(const world::Obstacle& piece)
+{
+	const auto& c = piece.corners;
+	Eigen::Vector2d axis = c[1] - c[0];
+	if ((c[2] - c[1]).norm() > axis.norm()) axis = c[2] - c[1];
+	if (axis.norm() <= 0) return std::nullopt;
+	double angle = std::atan2(axis.y(), axis.x());
+	if (angle < 0) angle += M_PI;
+	if (angle >= M_PI) angle -= M_PI;
+	return angle;
+}
+
+bool WallLines::parallel(double a, double b)
+{
+	const double d = std::abs(a - b);
+	return std::min(d, M_PI - d) <= M_PI / 180;
+}
+
 size_t WallLines::merge(std::vector<world::Obstacle>& solids, std::vector<size_t>& groupOf, double distance)
 {
 	std::vector<Piece> pieces;
 	for (size_t i = 0; i < solids.size(); i++)
 	{
 		if (solids[i].table >= 0) continue;
+		const auto angle = direction(solids[i]);
+		if (!angle) continue;
 		const auto& c = solids[i].corners;
-		Eigen::Vector2d axis = c[1] - c[0];
-		if ((c[2] - c[1]).norm() > axis.norm()) axis = c[2] - c[1];
-		const double length = axis.norm();
-		if (length <= 0) continue;
-		double angle = std::atan2(axis.y(), axis.x());
-		if (angle < 0) angle += M_PI;
-		if (angle >= M_PI) angle -= M_PI;
-		const Eigen::Vector2d normal(-std::sin(angle), std::cos(angle));
+		const double length = std::max((c[1] - c[0]).norm(), (c[2] - c[1]).norm());
+		const Eigen::Vector2d normal(-std::sin(*angle), std::cos(*angle));
 		const Eigen::Vector2d centre = (c[0] + c[1] + c[2] + c[3]) / 4;
-		pieces.push_back({i, angle, normal, normal.dot(centre), length});
+		pieces.push_back({i, *angle, normal, normal.dot(centre), length});
 	}
 	std::vector<size_t> parent(pieces.size());
 	std::iota(parent.begin(), parent.end(), 0);
-	const double parallel = M_PI / 180;
 	for (size_t a = 0; a < pieces.size(); a++)
 		for (size_t b = a + 1; b < pieces.size(); b++)
 		{
-			const double d = std::abs(pieces[a].angle - pieces[b].angle);
-			if (std::min(d, M_PI - d) > parallel) continue;
+			if (!parallel(pieces[a].angle, pieces[b].angle)) continue;
 			// Across pieces a's normal (parallel within a degree: either normal will do).
 			const double across = std::abs(pieces[a].normal.dot(
 				solids[pieces[b].solid].corners[0] + solids[pieces[b].solid].corners[2] -

@@ -23,8 +23,9 @@ namespace whiskermap::smooth
  *  the map holds twice (DuplicateLegs: a table mapped again after the path drifted) are held
  *  to one place, and walls it holds twice (DuplicateWalls) to one line (SameSolidFactor),
  *  which closes the loop the particle left open; each table or wall mapped twice is held only
- *  if the solution holding it costs no more than the one leaving it apart (eq. S6). Odometry told exact (every increment's covariance zero) leaves
- *  nothing to estimate: the path is the odometry's chain from the start. */
+ *  if the solution holding it costs no more than the one leaving it apart (eq. S6). Odometry
+ *  told exact (every increment's covariance zero) leaves nothing to estimate: the path is the
+ *  odometry's chain from the start. */
 class PathSmoother
 {
    public:

@@ -1,6 +1,7 @@
 #pragma once
 #include <whiskermap/world/Obstacle.h>
 
+#include <optional>
 #include <vector>
 
 namespace whiskermap::smooth
@@ -17,5 +18,12 @@ struct WallLines
 	/** Moves the pieces in `solids` and renumbers `groupOf` (groups stay 0..count-1);
 	 *  returns the new group count. */
 	static size_t merge(std::vector<world::Obstacle>& solids, std::vector<size_t>& groupOf, double distance);
+
+	/** The direction of a wall piece's long axis, radians in [0, pi); nothing for a piece of
+	 *  zero length. */
+	static std::optional<double> direction(const world::Obstacle& piece);
+
+	/** True when two such directions are parallel within 1 degree. */
+	static bool parallel(double a, double b);
 };
 }  // namespace whiskermap::smooth
