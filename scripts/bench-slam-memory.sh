@@ -47,5 +47,5 @@ for path_seed in ${PATH_SEEDS:-2011 2012}; do
       --odometry "$odo" --seed "$path_seed" -o "$log"
   done
   for seed in ${SEEDS:-1}; do run "$path_seed" default "$seed"; done
-  run "$path_seed" exact 1  # every particle on the true path: the filter seed changes nothing
+  run "$path_seed" exact 1  # once: every particle follows the true path
 done
