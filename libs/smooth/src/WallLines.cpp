@@ -24,11 +24,15 @@ size_t find(std::vector<size_t>& parent, size_t i)
 }
 }  // namespace
 
-std::optional<double> WallLines::direction(const world::Obstacle& piece)
+Eigen::Vector2d WallLines::longAxis(const world::Obstacle& piece)
 {
 	const auto& c = piece.corners;
-	Eigen::Vector2d axis = c[1] - c[0];
-	if ((c[2] - c[1]).norm() > axis.norm()) axis = c[2] - c[1];
+	return (c[2] - c[1]).norm() > (c[1] - c[0]).norm() ? Eigen::Vector2d(c[2] - c[1]) : Eigen::Vector2d(c[1] - c[0]);
+}
+
+std::optional<double> WallLines::direction(const world::Obstacle& piece)
+{
+	const Eigen::Vector2d axis = longAxis(piece);
 	if (axis.norm() <= 0) return std::nullopt;
 	double angle = std::atan2(axis.y(), axis.x());
 	if (angle < 0) angle += M_PI;
@@ -51,7 +55,7 @@ size_t WallLines::merge(std::vector<world::Obstacle>& solids, std::vector<size_t
 		const auto angle = direction(solids[i]);
 		if (!angle) continue;
 		const auto& c = solids[i].corners;
-		const double length = std::max((c[1] - c[0]).norm(), (c[2] - c[1]).norm());
+		const double length = longAxis(solids[i]).norm();
 		const Eigen::Vector2d normal(-std::sin(*angle), std::cos(*angle));
 		const Eigen::Vector2d centre = (c[0] + c[1] + c[2] + c[3]) / 4;
 		pieces.push_back({i, *angle, normal, normal.dot(centre), length});

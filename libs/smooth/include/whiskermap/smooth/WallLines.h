@@ -19,6 +19,9 @@ struct WallLines
 	 *  returns the new group count. */
 	static size_t merge(std::vector<world::Obstacle>& solids, std::vector<size_t>& groupOf, double distance);
 
+	/** A wall piece's long axis: the longer of its two sides, as a vector. */
+	static Eigen::Vector2d longAxis(const world::Obstacle& piece);
+
 	/** The direction of a wall piece's long axis, radians in [0, pi); nothing for a piece of
 	 *  zero length. */
 	static std::optional<double> direction(const world::Obstacle& piece);
