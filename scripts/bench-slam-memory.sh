@@ -5,10 +5,11 @@
 # and sweeps with exact odometry; whisker-slam runs STEPS sweeps (default 4000) of each with
 # PARTICLES (default 20), CONFIG (default config/whisker-slam.ini) and filter SEEDS (default
 # 1; the exact log once, with seed 1), the exact one told so
-# (`odometry_model = exact`: the particles follow the true path, so the maps are whisker-map's
-# at the true poses and what grows is the map itself, not the filter's drift).
+# (`odometry_model = exact`: the filter runs one particle, on the true path, so the map is
+# whisker-map's at the true poses and what grows is the map itself, not the filter's drift).
 # Prints per run: the filter's peak resident memory and live heap after the first tenth of
-# the sweeps and after the last (summary.json), the map's tables (6 in the world), the raw
+# the sweeps and after the last (summary.json), what all the particles' maps held at those two
+# points (tables, legs, explicit contacts), the map's tables (6 in the world), the raw
 # ATE of the estimate, of the best particle and of the odometry, ms per step, wall time.
 # Usage: scripts/bench-slam-memory.sh [BUILD_DIR] [WORK_DIR]   (a noisy 4,000-step run takes 1-11 minutes)
 set -euo pipefail
@@ -33,9 +34,14 @@ path_seed, odo, seed, out = sys.argv[1:]
 s = json.load(open(out + "/summary.json"))
 rss, heap = s["filter_peak_rss_mb"], s["filter_heap_mb"]
 ate = lambda k: s[k]["trajectory"]["ate_rmse_m"] if k in s else float("nan")
-print(f"explore path {path_seed}, {odo} odometry, {s['particles']} particles, seed {seed}, {s['sweeps']} sweeps: filter peak RSS "
+def maps(when):  # summed over the particles
+    m = s["filter_maps"][when]
+    return (f"{m['tables']} tables, {m['legs']} legs, "
+            f"{m['contacts_explained'] + m['contacts_unexplained']} contacts ({m['contacts_unexplained']} unexplained)")
+print(f"explore path {path_seed}, {odo} odometry, {s['particles_config']} particles asked ({s['particles']} ran), seed {seed}, {s['sweeps']} sweeps: filter peak RSS "
       f"{rss['first_tenth']:.1f} -> {rss['end']:.1f} MB, live heap {heap['first_tenth']:.1f} -> {heap['end']:.1f} MB "
-      f"(after the first tenth -> the last sweep); {s['map_tables']} tables; raw ATE estimate {ate('estimated'):.3f} m, "
+      f"(after the first tenth -> the last sweep); the particles' maps {maps('first_tenth')} -> {maps('end')}; "
+      f"{s['map_tables']} tables; raw ATE estimate {ate('estimated'):.3f} m, "
       f"best particle {ate('filter'):.3f} m, odometry {ate('odometry'):.3f} m; "
       f"{s['time_per_step_ms']['mean']:.1f} ms per step (mean), {s['wall_time_s']:.0f} s")
 PY

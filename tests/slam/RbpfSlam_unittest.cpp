@@ -111,6 +111,19 @@ TEST_F(TSlamParamsTest, StrictKeysAndValues)
 	std::ofstream(path("noisy.ini")) << "[odometry]\ntranslation_noise=0.05\nrotation_noise_deg=0\nturn_noise=0\n"
 										"turn_translation_noise=0\nscale_bias=0\n";
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nodometry_model = noisy.ini\n")), core::Error);
+	// Exact odometry runs one particle (the others would repeat it); exact odometry with a
+	// [motion_model] floor still spreads the particles, and so does any noisy preset.
+	const auto exact = slam::TSlamParams::load(ini("[slam]\nodometry_model = exact\nparticles = 40\n"));
+	EXPECT_TRUE(exact.exactMotion());
+	EXPECT_EQ(exact.particles, 40u);
+	EXPECT_EQ(exact.filterParticles(), 1u);
+	std::ofstream(path("floored.ini")) << "[odometry]\ntranslation_noise=0\nrotation_noise_deg=0\nturn_noise=0\n"
+										  "turn_translation_noise=0\nscale_bias=0\n[motion_model]\nmin_std_xy=0.001\n"
+										  "min_std_phi_deg=0\n";
+	const auto floored = slam::TSlamParams::load(ini("[slam]\nodometry_model = floored.ini\nparticles = 40\n"));
+	EXPECT_FALSE(floored.exactMotion());
+	EXPECT_EQ(floored.filterParticles(), 40u);
+	EXPECT_EQ(slam::TSlamParams::load(ini("[slam]\nparticles = 40\n")).filterParticles(), 40u);
 }
 
 TEST(RbpfSlam, OnePosePerSweepFromTheKnownStart)
@@ -188,6 +201,7 @@ TEST_F(TSlamParamsTest, ExactOdometryModelFollowsTheOdometry)
 										 "/config/whisker-map.ini\n"));
 	auto sweeps = obs::RawlogReader::read(SRC + "/datasets/paper_arena/default.rawlog").sweeps;
 	sweeps.resize(60);
+	EXPECT_EQ(slam::RbpfSlam(p, maps::MapConfig::load(p.map_config)).particles().particlesCount(), 1u);
 	const auto path = run(p, sweeps);
 	ASSERT_EQ(path.size(), sweeps.size());
 	for (size_t i = 0; i < path.size(); i++)

@@ -27,7 +27,11 @@ done
 python3 - "$work/a/summary.json" "$particles" "$sweeps" "$heap" <<'PY' || { echo "FAIL: summary.json"; cat "$work/a/summary.json"; exit 1; }
 import json, sys
 s = json.load(open(sys.argv[1]))  # valid JSON, with every key the doc lists
-assert s["particles"] == int(sys.argv[2]) and s["sweeps"] == int(sys.argv[3]), "particles/sweeps"
+assert s["particles"] == s["particles_config"] == int(sys.argv[2]) and s["sweeps"] == int(sys.argv[3]), "particles/sweeps"
+fm = s["filter_maps"]  # summed over the particles: 240 sweeps map a table in every particle's map
+keys = {"tables", "legs", "walls", "contacts_explained", "contacts_unexplained", "swept_chunks", "swept_chunks_shared"}
+assert set(fm) == {"first_tenth", "end"} and all(set(fm[k]) == keys for k in fm), "filter_maps keys"
+assert fm["end"]["legs"] >= fm["end"]["tables"] >= s["particles"] and fm["end"]["contacts_explained"] >= fm["end"]["legs"], "filter_maps"
 assert set(s["time_per_step_ms"]) == {"mean", "median", "p95", "max"}, "time_per_step_ms"
 assert len(s["ess"]) == s["sweeps"] and all(0 < e <= 1 for e in s["ess"]), "ess"
 assert s["resamplings"] >= 0, "resamplings"
@@ -95,6 +99,17 @@ awk -v e="$est_c" -v o="$odo" 'BEGIN { exit !(e > 0 && e < 0.5 && e <= 2.5 * o) 
 "$slam" -q -i "${data}_obs.rawlog" -o "$work/d" --particles $particles --sweeps 60 --seed 8
 head -62 "$work/a/estimated_path.txt" > "$work/a_prefix.txt"
 if cmp -s "$work/a_prefix.txt" "$work/d/estimated_path.txt"; then echo "FAIL: --seed 8 gave seed 7's path"; exit 1; fi
+
+# Odometry told exact (on a log whose odometry is exact): the filter runs one particle, since
+# every particle would follow the same path and build the same map; summary.json says so, the
+# terminal too, and the estimate is the recorded path.
+sed -e 's#^map_config = .*#map_config = '"$src"'/config/whisker-map.ini#' -e 's#^odometry_model = .*#odometry_model = exact#' \
+  "$src/config/whisker-slam.ini" > "$work/exact.ini"
+"$slam" -c "$work/exact.ini" -i "$src/datasets/paper_arena/default.rawlog" -o "$work/e" --particles $particles --sweeps 60 \
+  2> "$work/e.err" > /dev/null
+grep -q "odometry told exact: 1 particle (the $particles asked for" "$work/e.err" || { echo "FAIL: no told-exact note"; cat "$work/e.err"; exit 1; }
+python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); assert s["particles"] == 1 and s["particles_config"] == int(sys.argv[2]) and s["filter"]["trajectory"]["ate_rmse_m"] < 1e-9, s' \
+  "$work/e/summary.json" $particles || { echo "FAIL: told exact: summary.json"; exit 1; }
 
 # [slam] manhattan_walls (shipped on): every particle's map holds walls, each along the axis or
 # at right angles to it, and the map written holds them (map_walls.csv: x0 = x1 or y0 = y1).

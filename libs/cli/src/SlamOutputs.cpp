@@ -74,7 +74,7 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 	const auto& p = *run.params;
 	nlohmann::ordered_json j;  // a JSON writer: any path (quotes, backslashes) stays valid JSON
 	j["input"] = run.input, j["config"] = run.config, j["map_config"] = run.mapConfig;
-	j["particles"] = p.particles, j["seed"] = p.seed, j["sweeps"] = st.count;
+	j["particles"] = run.particles, j["particles_config"] = p.particles, j["seed"] = p.seed, j["sweeps"] = st.count;
 	j["time_per_step_ms"] = {
 		{"mean", st.count ? st.totalMs / st.count : 0.0},
 		{"median", quantile(st.ms.items(), 0.5)},
@@ -106,6 +106,12 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 	j["filter_peak_rss_mb"] = {{"first_tenth", run.filterRssTenthMb}, {"end", run.filterRssMb}};
 	const auto known = [](double mb) { return std::isnan(mb) ? nlohmann::json() : nlohmann::json(mb); };  // null: not measured
 	j["filter_heap_mb"] = {{"first_tenth", known(run.filterHeapTenthMb)}, {"end", known(run.filterHeapMb)}};
+	const auto maps = [](const slam::RbpfSlam::TMapTotals& t) {
+		return nlohmann::json{{"tables", t.tables}, {"legs", t.legs}, {"walls", t.walls},
+							  {"contacts_explained", t.explained}, {"contacts_unexplained", t.unexplained},
+							  {"swept_chunks", t.sweptChunks}, {"swept_chunks_shared", t.sharedChunks}};
+	};
+	j["filter_maps"] = {{"first_tenth", maps(run.filterMapsTenth)}, {"end", maps(run.filterMaps)}};
 	std::ofstream f(path);
 	f << j.dump(2) << "\n";
 	if (!f) throw core::Error(path + ": write failed");
@@ -127,7 +133,7 @@ std::string SlamOutputs::write(OutputDir& out, const TRun& run, const MapOutputs
 	drawPaths(out, run, picture);
 	writeSummary(out.path("summary.json"), run, scores);
 	char line[256];
-	std::snprintf(line, sizeof(line), "%zu sweeps, %u particles, %zu tables", run.sweeps, run.params->particles,
+	std::snprintf(line, sizeof(line), "%zu sweeps, %zu particle%s, %zu tables", run.sweeps, run.particles, run.particles == 1 ? "" : "s",
 				  run.mapTables.size());
 	std::string text = line;
 	if (scores)

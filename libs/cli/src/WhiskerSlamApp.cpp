@@ -123,6 +123,10 @@ int run(Options& o)
 	const auto t0 = std::chrono::steady_clock::now();
 	OutputDir out(o.outdir);
 	slam::RbpfSlam slam(params, inits);
+	result.particles = slam.particles().particlesCount();
+	if (!o.quiet && result.particles < params.particles)
+		std::fprintf(stderr, "whisker-slam: odometry told exact: 1 particle (the %u asked for would each follow the "
+					 "same path and build the same map)\n", params.particles);
 	result.odometryFile = out.path(SlamOutputs::ODOMETRY), result.estimatedFile = out.path(SlamOutputs::ESTIMATED);
 	world::PathLog::Writer odometry(result.odometryFile, SlamOutputs::ODOMETRY_TITLE);
 	PoseSpool estimated;  // the best path, exact, for the map rebuilt at it
@@ -146,14 +150,17 @@ int run(Options& o)
 		slam.settle(settled);
 		result.steps.add(step.ms, step.ess, step.resampled, slam.paths().nodes());
 		k++;
-		if (k == std::max<size_t>(n / 10, 1)) result.filterRssTenthMb = core::peakRssMb(), result.filterHeapTenthMb = core::heapInUseMb();
+		if (k == std::max<size_t>(n / 10, 1))
+			result.filterRssTenthMb = core::peakRssMb(), result.filterHeapTenthMb = core::heapInUseMb(),
+			result.filterMapsTenth = slam.mapTotals();
 		if (bar && (k % 10 == 0 || k == n))
-			std::fprintf(stderr, "\rwhisker-slam: %zu/%zu sweeps, %u particles, ESS %.2f", k, n, params.particles,
+			std::fprintf(stderr, "\rwhisker-slam: %zu/%zu sweeps, %zu particles, ESS %.2f", k, n, result.particles,
 						 step.ess);
 	});
 	if (bar) std::fprintf(stderr, "\n");
 	result.filterRssMb = core::peakRssMb();
 	result.filterHeapMb = core::heapInUseMb();
+	result.filterMaps = slam.mapTotals();
 	odometry.close();
 	for (const auto& p : slam.bestPath()) settled(p);
 	std::optional<smooth::PathSmoother::TResult> smoothed;

@@ -16,7 +16,7 @@ namespace
 mrpt::bayes::CParticleFilter::TParticleFilterOptions filterOptions(const TSlamParams& p)
 {
 	mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
-	o.sampleSize = p.particles;
+	o.sampleSize = p.filterParticles();
 	o.resamplingMethod = p.resampling;
 	o.adaptiveSampleSize = false;
 	return o;
@@ -166,6 +166,22 @@ std::vector<mrpt::poses::CPose2D> RbpfSlam::bestPath() const
 	std::vector<mrpt::poses::CPose2D> out;
 	for (size_t i = skip; i < path.size(); i++) out.emplace_back(path[i]);
 	return out;
+}
+
+RbpfSlam::TMapTotals RbpfSlam::mapTotals() const
+{
+	TMapTotals t;
+	for (const auto& p : m_pdf.m_particles)
+	{
+		const auto map = p.d->mapTillNow.mapByClass<maps::CHierarchicalObjectMap>();
+		if (!map) continue;
+		const auto& s = map->lastingMap().state();
+		t.tables += s.tableCount(), t.legs += s.legCount(), t.walls += s.walls().size();
+		for (model::Id c = 0; c < s.contactIdBound(); c++)
+			if (s.hasContact(c)) (s.contact(c).leg == model::NONE ? t.unexplained : t.explained)++;
+		t.sweptChunks += map->sweptGrid().chunkCount(), t.sharedChunks += map->sweptGrid().sharedChunks();
+	}
+	return t;
 }
 
 const maps::CHierarchicalObjectMap& RbpfSlam::bestMap() const

@@ -2,6 +2,7 @@
 #include <whiskermap/cli/MapOutputs.h>
 #include <whiskermap/cli/OutputDir.h>
 #include <whiskermap/cli/StepFigures.h>
+#include <whiskermap/slam/RbpfSlam.h>
 #include <whiskermap/slam/TSlamParams.h>
 #include <whiskermap/smooth/PathSmoother.h>
 #include <whiskermap/world/Table.h>
@@ -33,6 +34,7 @@ struct SlamOutputs
 		std::string input, config, mapConfig, truthPath;  ///< truthPath empty: no truth
 		const slam::TSlamParams* params = nullptr;
 		size_t sweeps = 0;  ///< lines in each path file (the truth file's first `sweeps` are scored)
+		size_t particles = 0;  ///< the particles the filter ran (params->filterParticles())
 		std::string estimatedFile, odometryFile, filterFile;  ///< the path files, written (staged)
 		StepFigures steps;
 		std::vector<world::Table> mapTables;  ///< the best particle's map
@@ -47,6 +49,8 @@ struct SlamOutputs
 		double filterRssTenthMb = 0, filterRssMb = 0;
 		/** The heap in live use (MB, core::heapInUseMb: NaN if not measured) at the same two points. */
 		double filterHeapTenthMb = 0, filterHeapMb = 0;
+		/** What the particles' maps held at the same two points (slam::RbpfSlam::mapTotals). */
+		slam::RbpfSlam::TMapTotals filterMapsTenth, filterMaps;
 	};
 
 	/** Writes paths.png and summary.json into `out`; returns a one-line result for the terminal. */

@@ -37,6 +37,9 @@ namespace whiskermap::slam
  *  resample_ess, the particles are resampled before the next one, and their weights made
  *  equal (MRPT 2.5.8's performResampling leaves them unequal: resample()).
  *
+ *  Odometry told exact (TSlamParams::exactMotion) runs one particle: any more would repeat
+ *  it, path and map.
+ *
  *  Reproducible: the constructor seeds MRPT's global random generator with params.seed
  *  (every draw of the filter comes from it; the maps' samplers have their own seeds). */
 class RbpfSlam
@@ -47,6 +50,14 @@ class RbpfSlam
 		double ms = 0;  ///< wall time of the filter step (prediction, weights, resampling, map updates)
 		double ess = 1;  ///< normalised effective sample size before resampling, in (0, 1]
 		bool resampled = false;  ///< ESS below resample_ess: the particles are resampled before the next sweep
+	};
+
+	/** What the particles' maps hold, summed over the particles (what their memory grows with). */
+	struct TMapTotals
+	{
+		size_t tables = 0, legs = 0, walls = 0;
+		size_t explained = 0, unexplained = 0;  ///< explicit contacts with a leg, and without
+		size_t sweptChunks = 0, sharedChunks = 0;  ///< swept-grid chunks, and those shared with a copy
 	};
 
 	RbpfSlam(const TSlamParams& params, const mrpt::maps::TSetOfMetricMapInitializers& maps);
@@ -77,6 +88,8 @@ class RbpfSlam
 	/** The path of the particle with the highest weight: one pose per sweep after those
 	 *  settled (all of them when settle() is never called). */
 	std::vector<mrpt::poses::CPose2D> bestPath() const;
+	/** The particles' maps' contents, summed (walks every particle's contacts). */
+	TMapTotals mapTotals() const;
 	/** That particle's map. */
 	const maps::CHierarchicalObjectMap& bestMap() const;
 	const mrpt::maps::CMultiMetricMapPDF& particles() const { return m_pdf; }

@@ -36,6 +36,14 @@ struct TSlamParams
 	 *  a1..a4 times motion_noise_scale (what moves the particles). */
 	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motionModel(const mrpt::poses::CPose2D& increment) const;
 
+	/** The motion model moves every particle by the odometry exactly (exact odometry and no
+	 *  [motion_model] floors): the particles then follow one path, and their maps, which
+	 *  insert the same sweeps at the same poses with the same seeds, are one map. */
+	bool exactMotion() const { return motion.exact() && motion.min_std_xy == 0 && motion.min_std_phi == 0; }
+	/** The particles the filter runs: `particles`, or one when exactMotion() (the others
+	 *  would repeat it, draw for draw). */
+	unsigned filterParticles() const { return exactMotion() ? 1 : particles; }
+
 	/** Reads `path`. Relative `map_config` and `odometry_model` files are looked up next to
 	 *  it first, then as shipped presets (config/, config/odometry/). */
 	static TSlamParams load(const std::string& path);
