@@ -13,6 +13,7 @@
 #include <whiskermap/world/Trajectory.h>
 #include <whiskermap/world/WhiskerSimulator.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -408,4 +409,42 @@ TEST(LastingMap, SavedRepresentationAnnealsThePendingSweepsOnACopy)
 		break;
 	}
 	EXPECT_TRUE(checked);
+}
+
+// The working memory of an insertion (samplers, local problem, scratch) is the thread's
+// (LastingWorkspace), shared by every lasting map on it: maps inserting in turn, one of them
+// with other sampler settings (so that the workspace is rebuilt at every turn), end exactly
+// where each ends alone.
+TEST(LastingMap, MapsInsertingInTurnEndAsEachAlone)
+{
+	const std::string base = SRC + "/config/worlds/eval/sparse/seed1";
+	const auto world = world::World::load(base + ".ini");
+	world::WhiskerSimulator sim(world, scratchbot(), world::NoisePreset::load(SRC + "/config/noise/default.ini"), 1);
+	std::vector<std::pair<CPose2D, mrpt::obs::CObservation::Ptr>> sweeps;
+	for (const auto& pose : world::Trajectory::readPathFile(base + ".path"))
+		if (sim.poseIsFree(pose)) sweeps.emplace_back(pose, sim.sense(pose, mrpt::Clock::fromDouble(0)));
+	const auto make = [](bool other) {
+		auto m = std::make_unique<Map>(TMode::Lasting);
+		if (other) m->map->samplerParams.r1 = 0.05;  // fewer deaths proposed
+		return m;
+	};
+	const auto tables = [](const Map& m) {  // and the moves proposed over the run, which the settings change
+		std::vector<std::array<double, 3>> out;
+		for (const auto& o : m.map->mapObjects()) out.push_back({o.table.x, o.table.y, o.table.yaw});
+		for (const uint64_t n : m.map->proposed()) out.push_back({double(n), 0, 0});
+		return out;
+	};
+	std::vector<std::array<double, 3>> alone[2];
+	for (const bool other : {false, true})
+	{
+		auto m = make(other);
+		for (const auto& [pose, obs] : sweeps) m->multimap.insertObservation(*obs, mrpt::poses::CPose3D(pose));
+		alone[other] = tables(*m);
+	}
+	auto a = make(false), b = make(true);
+	for (const auto& [pose, obs] : sweeps)
+		for (Map* m : {a.get(), b.get()}) m->multimap.insertObservation(*obs, mrpt::poses::CPose3D(pose));
+	EXPECT_EQ(tables(*a), alone[0]);
+	EXPECT_EQ(tables(*b), alone[1]);
+	EXPECT_NE(alone[0], alone[1]);  // the other settings do change the run
 }

@@ -35,4 +35,14 @@ SamplerParams SamplerParams::fromIni(core::IniSection& sec)
 	sec.finish();
 	return p;
 }
+
+bool SamplerParams::operator==(const SamplerParams& o) const
+{
+	return r1 == o.r1 && r2 == o.r2 && r3 == o.r3 && r4 == o.r4 && schedule.betas() == o.schedule.betas() &&
+		   sweeps_per_temperature == o.sweeps_per_temperature && coldest_sweeps == o.coldest_sweeps &&
+		   polish_sweeps == o.polish_sweeps && existing_leg_probability == o.existing_leg_probability &&
+		   merge_probability == o.merge_probability && leg_position_noise == o.leg_position_noise &&
+		   leg_angle_noise == o.leg_angle_noise && acceptance == o.acceptance && proposals == o.proposals &&
+		   posterior_steps == o.posterior_steps;
+}
 }  // namespace whiskermap::inference

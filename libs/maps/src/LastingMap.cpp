@@ -1,5 +1,6 @@
 #include <whiskermap/inference/RigidTableFit.h>
 #include <whiskermap/maps/LastingMap.h>
+#include <whiskermap/maps/LastingWorkspace.h>
 #include <whiskermap/model/Posterior.h>
 
 #include <algorithm>
@@ -42,9 +43,10 @@ inference::SamplerParams localSampler(inference::SamplerParams p, const LastingM
 }  // namespace
 
 std::vector<double> LastingMap::existence(
-	const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model,
-	const inference::SamplerParams& sampler, uint64_t seed, std::vector<model::LastingState::ChainSpread>& spread)
+	LastingWorkspace& ws, const model::Blackboard& start, const model::Blackboard& solved,
+	const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed)
 {
+	auto& spread = ws.spread;
 	// Where legs changed (came, went, moved, relinked, gained contacts): a table's existence
 	// depends on its own legs and on the legs that could pair with them (TableExistence), so
 	// only tables within a pair's reach of a change are scored again; the rest keep theirs.
@@ -64,7 +66,7 @@ std::vector<double> LastingMap::existence(
 	for (model::Id t = 0; t < solved.tableIdBound(); t++)
 	{
 		if (!solved.hasTable(t)) continue;
-		bool same = t < static_cast<model::Id>(m_region->tables.size()) && start.hasTable(t) &&
+		bool same = t < static_cast<model::Id>(ws.region->tables.size()) && start.hasTable(t) &&
 					start.legsOf(t) == solved.legsOf(t) && start.table(t).x == solved.table(t).x &&
 					start.table(t).y == solved.table(t).y && start.table(t).theta == solved.table(t).theta;
 		for (const model::Id l : solved.legsOf(t))
@@ -72,21 +74,21 @@ std::vector<double> LastingMap::existence(
 				same = same && std::hypot(x - solved.leg(l).x, y - solved.leg(l).y) > reach;
 		if (same)
 		{
-			out[static_cast<size_t>(t)] = m_state.existence(m_region->tables[static_cast<size_t>(t)]);
-			spread[static_cast<size_t>(t)] = m_state.chainSpread(m_region->tables[static_cast<size_t>(t)]);
+			out[static_cast<size_t>(t)] = m_state.existence(ws.region->tables[static_cast<size_t>(t)]);
+			spread[static_cast<size_t>(t)] = m_state.chainSpread(ws.region->tables[static_cast<size_t>(t)]);
 		}
 		else
 			rescored.push_back(t);
 	}
 	if (rescored.empty() || sampler.posterior_steps == 0)
 	{
-		for (const model::Id t : rescored) out[static_cast<size_t>(t)] = m_existence.of(solved, t);
+		for (const model::Id t : rescored) out[static_cast<size_t>(t)] = ws.existence.of(solved, t);
 		return out;
 	}
 	// Issue 10's posterior: the fraction of the chain's samples holding each re-scored table.
-	if (!m_posterior) m_posterior = std::make_unique<inference::PosteriorChain>(model, sampler);
+	if (!ws.posterior) ws.posterior = std::make_unique<inference::PosteriorChain>(model, sampler);
 	const long burnIn = sampler.posterior_steps / 5;
-	const auto chain = m_posterior->run(solved, seed ^ 0x5851F42D4C957F2DULL, burnIn, (sampler.posterior_steps - burnIn) / 5, 5);
+	const auto chain = ws.posterior->run(solved, seed ^ 0x5851F42D4C957F2DULL, burnIn, (sampler.posterior_steps - burnIn) / 5, 5);
 	for (const model::Id t : rescored)
 	{
 		const auto& c = chain[static_cast<size_t>(t)];
@@ -105,13 +107,13 @@ std::vector<double> LastingMap::wallExistence(const model::Blackboard& solved)
 	return out;
 }
 
-void LastingMap::refitReported(const model::ModelParams& model)
+void LastingMap::refitReported(LastingWorkspace& ws, const model::ModelParams& model)
 {
 	// Region tables whose fit data did not change keep their pose (refitting gives the same).
 	std::vector<model::Id> kept;
-	for (const auto& [b, pose] : m_carry)
+	for (const auto& [b, pose] : ws.carry)
 	{
-		const model::Id t = m_newTables[static_cast<size_t>(b)];
+		const model::Id t = ws.newTables[static_cast<size_t>(b)];
 		if (t == model::NONE) continue;  // merged away (mergeOverlappingLegs)
 		model::Table r = m_state.reported(t);
 		r.x = pose.x, r.y = pose.y, r.theta = pose.theta;
@@ -119,13 +121,13 @@ void LastingMap::refitReported(const model::ModelParams& model)
 		kept.push_back(t);
 	}
 	std::sort(kept.begin(), kept.end());
-	m_refit.insert(m_refit.end(), m_newTables.begin(), m_newTables.end());
-	for (const model::Id l : m_newLegs)
-		if (l != model::NONE) m_refit.push_back(m_state.leg(l).parent);
-	std::sort(m_refit.begin(), m_refit.end());
-	m_refit.erase(std::unique(m_refit.begin(), m_refit.end()), m_refit.end());
+	ws.refit.insert(ws.refit.end(), ws.newTables.begin(), ws.newTables.end());
+	for (const model::Id l : ws.newLegs)
+		if (l != model::NONE) ws.refit.push_back(m_state.leg(l).parent);
+	std::sort(ws.refit.begin(), ws.refit.end());
+	ws.refit.erase(std::unique(ws.refit.begin(), ws.refit.end()), ws.refit.end());
 	const model::ModelParams shaft = reportModel(model);
-	for (const model::Id t : m_refit)
+	for (const model::Id t : ws.refit)
 		if (t != model::NONE && m_state.hasTable(t) && !std::binary_search(kept.begin(), kept.end(), t))
 			m_state.setReported(t, inference::fitRigidTable(m_state, t, shaft));
 }
@@ -159,26 +161,21 @@ LastingMap::TStats LastingMap::annealPending(
 {
 	if (m_pendingSweeps == 0) return {};
 	m_pendingSweeps = 0;
-	if (!(m_samplerModel == model) || !(m_samplerSchedule == m_options.schedule))
-	{
-		m_sampler.reset(), m_reviser.reset(), m_posterior.reset();
-		m_samplerModel = model;
-		m_samplerSchedule = m_options.schedule;
-	}
+	LastingWorkspace& ws = LastingWorkspace::local(model, sampler, m_options.schedule);
 	// The pending contacts, in insertion order (a scan: small against the anneal).
-	m_new.clear();
+	ws.fresh.clear();
 	for (model::Id c = 0; c < m_state.contactIdBound(); c++)
-		if (m_state.hasContact(c) && m_state.contact(c).seq >= m_pendingFrom) m_new.push_back(c);
-	std::sort(m_new.begin(), m_new.end(), [&](model::Id a, model::Id b) {
+		if (m_state.hasContact(c) && m_state.contact(c).seq >= m_pendingFrom) ws.fresh.push_back(c);
+	std::sort(ws.fresh.begin(), ws.fresh.end(), [&](model::Id a, model::Id b) {
 		return m_state.contact(a).seq < m_state.contact(b).seq;
 	});
 	TStats stats =
-		solve(model, localSampler(sampler, m_options.schedule), m_options.visit_radius, seed, grid, m_sampler);
+		solve(ws, model, localSampler(sampler, m_options.schedule), m_options.visit_radius, seed, grid, ws.sampler);
 	if (model.cornersTighterThanReadings())
 		for (uint32_t k = 0; k < m_options.noisy_revisions; k++)
 		{
 			TStats r;
-			if (!reviseNext(model, sampler, seed ^ (0x9E3779B97F4A7C15ULL * (k + 1)), grid, r)) continue;
+			if (!reviseNext(ws, model, sampler, seed ^ (0x9E3779B97F4A7C15ULL * (k + 1)), grid, r)) continue;
 			stats.revisions++;
 			inference::addMoveCounts(stats.proposed, stats.accepted, stats.moveTypes, r);
 		}
@@ -186,7 +183,7 @@ LastingMap::TStats LastingMap::annealPending(
 }
 
 bool LastingMap::reviseNext(
-	const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed,
+	LastingWorkspace& ws, const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed,
 	const model::SweptGrid* grid, TStats& out)
 {
 	// A scan of the stored contacts (bounded by contacts_per_leg a leg plus the unexplained
@@ -203,16 +200,16 @@ bool LastingMap::reviseNext(
 	}
 	if (pick == model::NONE) pick = wrap, m_reviseSeq = 0;  // past the newest: from the oldest again
 	if (pick == model::NONE) return false;
-	m_new = m_state.contactsOf(m_state.contact(pick).leg);
-	for (const model::Id c : m_new) m_reviseSeq = std::max(m_reviseSeq, m_state.contact(c).seq + 1);
+	ws.fresh = m_state.contactsOf(m_state.contact(pick).leg);
+	for (const model::Id c : ws.fresh) m_reviseSeq = std::max(m_reviseSeq, m_state.contact(c).seq + 1);
 	// Every leg that could share a table with the revised one, every table that could hold it.
-	out = solve(model, sampler, std::max(m_options.visit_radius, model.maxDiagonal() + model.parent_gate), seed, grid, m_reviser);
+	out = solve(ws, model, sampler, std::max(m_options.visit_radius, model.maxDiagonal() + model.parent_gate), seed, grid, ws.reviser);
 	return true;
 }
 
 LastingMap::TStats LastingMap::solve(
-	const model::ModelParams& model, const inference::SamplerParams& sampler, double visit, uint64_t seed,
-	const model::SweptGrid* grid, std::unique_ptr<inference::BlackboardSampler>& cache)
+	LastingWorkspace& ws, const model::ModelParams& model, const inference::SamplerParams& sampler, double visit,
+	uint64_t seed, const model::SweptGrid* grid, std::unique_ptr<inference::BlackboardSampler>& cache)
 {
 	TStats stats;
 	// The local problem around the new contacts.
@@ -220,50 +217,50 @@ LastingMap::TStats LastingMap::solve(
 	radii.visit = visit;
 	radii.board = radii.visit + std::hypot(model.table_length, model.table_width) + 2 * model.parent_gate;
 	radii.context = radii.board + std::hypot(model.table_length, model.table_width);
-	if (!m_region) m_region = std::make_unique<model::LastingState::Region>(model);
-	m_state.extract(m_new, radii, model, *m_region);
-	m_region->board.setSweptGrid(grid);
-	const model::Blackboard& board = m_region->board;
+	if (!ws.region) ws.region = std::make_unique<model::LastingState::Region>(model);
+	m_state.extract(ws.fresh, radii, model, *ws.region);
+	ws.region->board.setSweptGrid(grid);
+	const model::Blackboard& board = ws.region->board;
 
 	if (!cache) cache = std::make_unique<inference::BlackboardSampler>(model, sampler);
 	const inference::StepResult result = cache->anneal(board, seed);
 	const model::Blackboard& solved = cache->best();
 
-	m_refit.clear();  // tables the region's legs stood under (a context table may lose or gain one)
-	m_carry.clear();  // region tables whose reported pose stands (board id, pose)
+	ws.refit.clear();  // tables the region's legs stood under (a context table may lose or gain one)
+	ws.carry.clear();  // region tables whose reported pose stands (board id, pose)
 	if (m_options.rigid_pose)
 	{
-		for (const model::Id l : m_region->legs)
-			if (l != model::NONE && m_state.hasLeg(l)) m_refit.push_back(m_state.leg(l).parent);
-		for (model::Id b = 0; b < static_cast<model::Id>(m_region->tables.size()); b++)
+		for (const model::Id l : ws.region->legs)
+			if (l != model::NONE && m_state.hasLeg(l)) ws.refit.push_back(m_state.leg(l).parent);
+		for (model::Id b = 0; b < static_cast<model::Id>(ws.region->tables.size()); b++)
 			if (sameFitData(board, solved, b))
-				m_carry.emplace_back(b, m_state.reported(m_region->tables[static_cast<size_t>(b)]));
+				ws.carry.emplace_back(b, m_state.reported(ws.region->tables[static_cast<size_t>(b)]));
 	}
-	m_state.replace(*m_region, solved, existence(board, solved, model, sampler, seed, m_spread), m_newTables, m_newLegs, wallExistence(solved), model);
-	for (size_t b = 0; b < m_newTables.size(); b++)
-		if (m_newTables[b] != model::NONE) m_state.setChainSpread(m_newTables[b], m_spread[b]);
+	m_state.replace(*ws.region, solved, existence(ws, board, solved, model, sampler, seed), ws.newTables, ws.newLegs, wallExistence(solved), model);
+	for (size_t b = 0; b < ws.newTables.size(); b++)
+		if (ws.newTables[b] != model::NONE) m_state.setChainSpread(ws.newTables[b], ws.spread[b]);
 	// No two legs in one place: the search may pass through overlaps (eq. 16 is soft), the
 	// stored map may not (doc/map-plugin.md). The merged legs' tables are refitted.
-	m_merged.clear();
-	if (m_state.mergeOverlappingLegs(m_newLegs, m_merged, m_refit) > 0)
+	ws.merged.clear();
+	if (m_state.mergeOverlappingLegs(ws.newLegs, ws.merged, ws.refit) > 0)
 	{
-		for (model::Id& l : m_newLegs)
+		for (model::Id& l : ws.newLegs)
 			if (l != model::NONE && !m_state.hasLeg(l)) l = model::NONE;
-		for (model::Id& t : m_newTables)
+		for (model::Id& t : ws.newTables)
 			if (t != model::NONE && !m_state.hasTable(t)) t = model::NONE;
-		for (const model::Id l : m_merged)
+		for (const model::Id l : ws.merged)
 			if (m_state.hasLeg(l))
 			{
 				m_state.fold(l, m_options.contacts_per_leg, model);
-				m_refit.push_back(m_state.leg(l).parent);
+				ws.refit.push_back(m_state.leg(l).parent);
 			}
 	}
-	for (const model::Id l : m_newLegs)
+	for (const model::Id l : ws.newLegs)
 		if (l != model::NONE) m_state.fold(l, m_options.contacts_per_leg, model);
-	for (const model::Id c : m_new)
+	for (const model::Id c : ws.fresh)
 		if (m_state.hasContact(c) && m_state.contact(c).leg == model::NONE)
 			m_state.forgetUnexplained(c, m_options.unexplained_per_spot, model.leg_width);
-	if (m_options.rigid_pose) refitReported(model);
+	if (m_options.rigid_pose) refitReported(ws, model);
 
 	for (model::Id t = 0; t < board.tableIdBound(); t++) stats.visited += board.hasTable(t) && !board.tableDormant(t);
 	for (model::Id l = 0; l < board.legIdBound(); l++) stats.visited += board.hasLeg(l) && !board.legDormant(l);

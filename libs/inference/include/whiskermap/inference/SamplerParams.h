@@ -55,5 +55,7 @@ struct SamplerParams
 	/** Reads every key of `sec` (all required but `acceptance`, `proposals` and `posterior_steps`; the schedule as beta_start,
 	 *  beta_end, temperatures) and calls sec.finish(); throws core::Error. */
 	static SamplerParams fromIni(core::IniSection& sec);
+	/** Every setting equal (the schedule's betas included). */
+	bool operator==(const SamplerParams& o) const;
 };
 }  // namespace whiskermap::inference

@@ -1,8 +1,6 @@
 #pragma once
 #include <whiskermap/inference/BlackboardSampler.h>
-#include <whiskermap/inference/PosteriorChain.h>
 #include <whiskermap/inference/RigidPoseSpread.h>
-#include <whiskermap/inference/TableExistence.h>
 #include <whiskermap/model/LastingState.h>
 
 #include <array>
@@ -12,6 +10,8 @@
 
 namespace whiskermap::maps
 {
+struct LastingWorkspace;
+
 /** The lasting map (doc/map-plugin.md): one hierarchical state (model::LastingState) that
  *  every inserted sweep updates where its contacts fall. An insertion adds the sweep's
  *  contacts, cuts the local problem around them out of the state, associates them with the
@@ -80,22 +80,6 @@ class LastingMap
 		double initialLogPosterior = 0, logPosterior = 0;  ///< local problem: associated, annealed
 	};
 
-	LastingMap() = default;
-	LastingMap(const LastingMap& o)
-		: m_state(o.m_state),
-		  m_options(o.m_options),
-		  m_reviseSeq(o.m_reviseSeq),
-		  m_pendingSweeps(o.m_pendingSweeps),
-		  m_pendingFrom(o.m_pendingFrom)
-	{
-	}
-	LastingMap& operator=(const LastingMap& o)
-	{
-		m_state = o.m_state, m_options = o.m_options, m_reviseSeq = o.m_reviseSeq;
-		m_pendingSweeps = o.m_pendingSweeps, m_pendingFrom = o.m_pendingFrom;
-		return *this;
-	}
-
 	void setOptions(const TOptions& o) { m_options = o; }
 	const TOptions& options() const { return m_options; }
 
@@ -133,50 +117,42 @@ class LastingMap
 	void clear() { m_state.clear(), m_reviseSeq = 0, m_pendingSweeps = 0, m_pendingFrom = 0; }
 
    private:
-	/** The local problem around m_new (hypotheses within `visit` metres visited): extracted,
-	 *  annealed with `sampler` (built once per model and schedule into `cache`), written back. */
+	/** The local problem around ws.fresh (hypotheses within `visit` metres visited): extracted,
+	 *  annealed with `sampler` (built once per model and schedule into `cache`, one of ws's
+	 *  samplers), written back. */
 	TStats solve(
-		const model::ModelParams& model, const inference::SamplerParams& sampler, double visit, uint64_t seed,
-		const model::SweptGrid* grid, std::unique_ptr<inference::BlackboardSampler>& cache);
+		LastingWorkspace& ws, const model::ModelParams& model, const inference::SamplerParams& sampler, double visit,
+		uint64_t seed, const model::SweptGrid* grid, std::unique_ptr<inference::BlackboardSampler>& cache);
 	/** One revision (TOptions::noisy_revisions): the problem around the explicit contacts of
 	 *  the leg holding the oldest explicit contact inserted at or after m_reviseSeq (from the
 	 *  oldest again when none is), its figures into `out`; false when no leg holds a contact. */
 	bool reviseNext(
-		const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed,
+		LastingWorkspace& ws, const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed,
 		const model::SweptGrid* grid, TStats& out);
 	/** The model the reported poses are fitted (and their spreads scored) with: `model` with
 	 *  shaft noise on. */
 	static model::ModelParams reportModel(const model::ModelParams& model);
 	/** Existence of each table of `solved` (grown from `start`, the region's board): the
 	 *  tables near a change scored again, by TableExistence or, with the sampler's
-	 *  posterior_steps, by the posterior chain from `solved` (seeded from `seed`). `spread`
+	 *  posterior_steps, by the posterior chain from `solved` (seeded from `seed`). ws.spread
 	 *  gets each table's chain pose spread: the chain's for those it scored, the stored one for
 	 *  the rest (none where TableExistence scored). */
 	std::vector<double> existence(
-		const model::Blackboard& start, const model::Blackboard& solved, const model::ModelParams& model,
-		const inference::SamplerParams& sampler, uint64_t seed, std::vector<model::LastingState::ChainSpread>& spread);
+		LastingWorkspace& ws, const model::Blackboard& start, const model::Blackboard& solved,
+		const model::ModelParams& model, const inference::SamplerParams& sampler, uint64_t seed);
 	/** Existence of each wall of `solved`: the logistic of its log-odds (model::logOddsWall). */
 	static std::vector<double> wallExistence(const model::Blackboard& solved);
 	/** Refits the reported pose of every table whose legs the last replace() may have changed:
-	 *  the region's (but those in m_carry, whose legs explain the same contacts as before:
-	 *  they keep their pose), and those its legs stood under before (m_refit) or stand under now. */
-	void refitReported(const model::ModelParams& model);
+	 *  the region's (but those in ws.carry, whose legs explain the same contacts as before:
+	 *  they keep their pose), and those its legs stood under before (ws.refit) or stand under now. */
+	void refitReported(LastingWorkspace& ws, const model::ModelParams& model);
 
+	// The map's content only: the working memory of an insertion is the thread's
+	// (LastingWorkspace), so a copy is the state and its options.
 	model::LastingState m_state;
 	TOptions m_options;
 	uint64_t m_reviseSeq = 0;
 	uint32_t m_pendingSweeps = 0;
 	uint64_t m_pendingFrom = 0;
-	// Reused across insertions (not copied: a copy rebuilds them): the local schedule's
-	// sampler and the revisions' (the sampler's full schedule), each for m_samplerModel.
-	std::unique_ptr<inference::BlackboardSampler> m_sampler, m_reviser;
-	std::unique_ptr<inference::PosteriorChain> m_posterior;  ///< with posterior_steps
-	model::ModelParams m_samplerModel;
-	TOptions::TSchedule m_samplerSchedule;
-	std::unique_ptr<model::LastingState::Region> m_region;
-	inference::TableExistence m_existence;
-	std::vector<model::Id> m_new, m_newTables, m_newLegs, m_refit, m_merged;
-	std::vector<std::pair<model::Id, model::Table>> m_carry;
-	std::vector<model::LastingState::ChainSpread> m_spread;  ///< existence()'s, by board id
 };
 }  // namespace whiskermap::maps
