@@ -7,10 +7,11 @@ LastingWorkspace& LastingWorkspace::local(
 	const LastingMap::TOptions::TSchedule& schedule)
 {
 	thread_local LastingWorkspace ws;
-	if (!ws.m_built || !(ws.m_model == model) || !(ws.m_sampler == sampler) || !(ws.m_schedule == schedule))
+	// Nothing is built until first used, so a fresh workspace needs no reset whatever its key.
+	if (!(ws.m_model == model) || !(ws.m_sampler == sampler) || !(ws.m_schedule == schedule))
 	{
 		ws.sampler.reset(), ws.reviser.reset(), ws.posterior.reset(), ws.region.reset();
-		ws.m_model = model, ws.m_sampler = sampler, ws.m_schedule = schedule, ws.m_built = true;
+		ws.m_model = model, ws.m_sampler = sampler, ws.m_schedule = schedule;
 	}
 	return ws;
 }

@@ -39,6 +39,5 @@ struct LastingWorkspace
 	model::ModelParams m_model;
 	inference::SamplerParams m_sampler;
 	LastingMap::TOptions::TSchedule m_schedule;
-	bool m_built = false;
 };
 }  // namespace whiskermap::maps
