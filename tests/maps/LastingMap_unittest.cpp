@@ -14,6 +14,7 @@
 #include <whiskermap/world/WhiskerSimulator.h>
 
 #include <array>
+#include <set>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -447,4 +448,56 @@ TEST(LastingMap, MapsInsertingInTurnEndAsEachAlone)
 	EXPECT_EQ(tables(*a), alone[0]);
 	EXPECT_EQ(tables(*b), alone[1]);
 	EXPECT_NE(alone[0], alone[1]);  // the other settings do change the run
+}
+
+// A copy of a lasting map (as a particle filter's resampling makes) shares the legs' folded
+// evidence and the contacts' readings with its original; a sweep inserted into the copy gives
+// it its own evidence where it folds and its own readings for the new contacts, shares the
+// rest still, and leaves the original as it was.
+TEST(LastingMap, CopiesShareEvidenceAndReadingsUntilTheyChange)
+{
+	const world::World w = oneTable(0, 0);
+	world::WhiskerSimulator sim(w, scratchbot(), world::NoisePreset::load(SRC + "/config/noise/default.ini"), 1);
+	const auto touching = [&](int leg) { return posesTouchingOnly({w}, w.tables[0].legCentre(leg), 8); };
+	Map a(TMode::Lasting);
+	for (const int leg : {0, 1})
+		for (const auto& pose : touching(leg)) a.insert(sim, pose);
+	const model::LastingState& sa = a.map->lastingMap().state();
+	// What a copy may share: the original's evidence objects and readings, and their values.
+	std::set<const void*> shared;
+	std::vector<std::array<double, model::LegEvidence::STATS>> evidenceBefore;
+	for (model::Id l = 0; l < sa.legIdBound(); l++)
+		if (sa.hasLeg(l) && !sa.evidence(l).empty())
+			shared.insert(&sa.evidence(l)), evidenceBefore.push_back(sa.evidence(l).stats());
+	const size_t folded = shared.size();
+	for (model::Id c = 0; c < sa.contactIdBound(); c++)
+		if (sa.hasContact(c)) shared.insert(&sa.shapelet(c));
+	ASSERT_GT(folded, 0u);
+	ASSERT_GT(shared.size(), folded);
+
+	CHierarchicalObjectMap copy(*a.map);
+	const model::LastingState& sb = copy.lastingMap().state();
+	// The copy's evidence objects (legs) or readings (contacts), shared with the original or its own.
+	const auto count = [&](bool legs, bool inShared) {
+		size_t n = 0;
+		for (model::Id l = 0; legs && l < sb.legIdBound(); l++)
+			if (sb.hasLeg(l) && !sb.evidence(l).empty()) n += shared.count(&sb.evidence(l)) == inShared;
+		for (model::Id c = 0; !legs && c < sb.contactIdBound(); c++)
+			if (sb.hasContact(c)) n += shared.count(&sb.shapelet(c)) == inShared;
+		return n;
+	};
+	EXPECT_EQ(count(true, true) + count(false, true), shared.size());  // a fresh copy shares everything
+	EXPECT_EQ(count(true, false) + count(false, false), 0u);
+
+	for (const auto& pose : touching(2))  // the table's far leg
+		copy.insertObservation(*sim.sense(pose, mrpt::Clock::fromDouble(0)), mrpt::poses::CPose3D(pose));
+	// Legs 0 and 1 are on the board of leg 2's insertions (a table diagonal away) and come
+	// back from it unchanged: their evidence is still the original's.
+	EXPECT_EQ(count(true, true), folded);
+	EXPECT_GT(count(false, true), 0u);  // so are their explicit contacts' readings
+	EXPECT_GT(count(false, false), 0u);  // the copy's own: leg 2's readings
+	std::vector<std::array<double, model::LegEvidence::STATS>> evidenceAfter;
+	for (model::Id l = 0; l < sa.legIdBound(); l++)
+		if (sa.hasLeg(l) && !sa.evidence(l).empty()) evidenceAfter.push_back(sa.evidence(l).stats());
+	EXPECT_EQ(evidenceAfter, evidenceBefore);  // the original is as it was
 }

@@ -18,7 +18,7 @@ double rigidTableScore(const model::LastingState& s, model::Id t, const model::T
 		model::tableCorner(table, leg.corner, p, leg.x, leg.y);  // eq. 6, rigid
 		leg.theta = table.theta;
 		if (!s.evidence(l).empty()) v += s.evidence(l).logLikelihood(leg, p);  // eq. 7, folded
-		for (const model::Id c : s.contactsOf(l)) v += model::logShapeletGivenLeg(s.contact(c).shapelet, leg, p);  // eq. 7
+		for (const model::Id c : s.contactsOf(l)) v += model::logShapeletGivenLeg(s.shapelet(c), leg, p);  // eq. 7
 	}
 	return v;
 }

@@ -18,6 +18,20 @@ void growTo(std::vector<T>& v, Id bound, const T& value = T())
 {
 	if (v.size() < static_cast<size_t>(bound)) v.resize(static_cast<size_t>(bound), value);
 }
+
+/** Marks `id` with `epoch`; false when it already was (one mark per extraction). */
+bool markOnce(std::vector<uint32_t>& marks, uint32_t epoch, Id id)
+{
+	if (marks[static_cast<size_t>(id)] == epoch) return false;
+	marks[static_cast<size_t>(id)] = epoch;
+	return true;
+}
+
+/** Evidence as the store keeps it: null when empty, else an immutable shared copy. */
+std::shared_ptr<const LegEvidence> share(const LegEvidence& e)
+{
+	return e.empty() ? nullptr : std::make_shared<const LegEvidence>(e);
+}
 }  // namespace
 
 LastingState::LastingState(const ModelParams& sizes)
@@ -30,19 +44,31 @@ LastingState::LastingState(const ModelParams& sizes)
 
 void LastingState::clear() { *this = LastingState(m_sizes); }
 
-bool LastingState::mark(std::vector<uint32_t>& marks, Id id)
+const LegEvidence& LastingState::evidence(Id l) const
 {
-	if (marks[static_cast<size_t>(id)] == m_epoch) return false;
-	marks[static_cast<size_t>(id)] = m_epoch;
-	return true;
+	static const LegEvidence none;
+	return m_evidence[static_cast<size_t>(l)] ? *m_evidence[static_cast<size_t>(l)] : none;
 }
 
 Id LastingState::addContact(const obs::Shapelet& s)
 {
-	const Id c = m_contacts.add({s, NONE, m_seq++});
-	growTo(m_contactMark, m_contacts.capacity(), 0u);
+	const Id c = newContact(s, m_seq++);
 	m_contactGrid.insert(c, s.x, s.y);
 	return c;
+}
+
+Id LastingState::newContact(const obs::Shapelet& s, uint64_t seq)
+{
+	const Id c = m_contacts.add(std::make_shared<const Reading>(Reading{s, seq}));
+	growTo(m_contactLeg, m_contacts.capacity(), NONE);
+	m_contactLeg[static_cast<size_t>(c)] = NONE;
+	return c;
+}
+
+void LastingState::dropContact(Id c)
+{
+	m_contacts[c].reset();  // the reading goes when no copy of the state holds it
+	m_contacts.remove(c);
 }
 
 Id LastingState::addTable(const Table& t, double existence)
@@ -52,7 +78,6 @@ Id LastingState::addTable(const Table& t, double existence)
 	growTo(m_reported, m_tables.capacity());
 	growTo(m_chainSpread, m_tables.capacity());
 	growTo(m_tableLegs, m_tables.capacity());
-	growTo(m_tableMark, m_tables.capacity(), 0u);
 	m_existence[id] = existence;
 	m_reported[id] = t;
 	m_chainSpread[id] = {};
@@ -61,13 +86,12 @@ Id LastingState::addTable(const Table& t, double existence)
 	return id;
 }
 
-Id LastingState::addLeg(const Leg& l, const LegEvidence& e)
+Id LastingState::addLeg(const Leg& l, std::shared_ptr<const LegEvidence> e)
 {
 	const Id id = m_legs.add(l);
 	growTo(m_evidence, m_legs.capacity());
 	growTo(m_legContacts, m_legs.capacity());
-	growTo(m_legMark, m_legs.capacity(), 0u);
-	m_evidence[id] = e;
+	m_evidence[id] = std::move(e);
 	m_legContacts[id].clear();
 	m_legGrid.insert(id, l.x, l.y);
 	m_maxLegRadius = std::max(m_maxLegRadius, std::hypot(l.wx, l.wy) / 2);
@@ -100,7 +124,9 @@ size_t LastingState::mergeOverlappingLegs(const std::vector<Id>& legs, std::vect
 			const Id into = keepA ? a : b, from = keepA ? b : a;
 			const std::vector<Id> contacts = m_legContacts[from];  // relinked first: never unexplained
 			for (const Id c : contacts) setContactLeg(c, into);
-			m_evidence[into].merge(m_evidence[from]);
+			LegEvidence merged = evidence(into);
+			merged.merge(evidence(from));
+			m_evidence[into] = share(merged);
 			const Id parent = m_legs[from].parent;
 			removeLeg(from);
 			if (parent != NONE)
@@ -134,25 +160,26 @@ void LastingState::removeLeg(Id l)
 		auto& v = m_tableLegs[parent];
 		v.erase(std::remove(v.begin(), v.end(), l), v.end());
 	}
-	m_evidence[l] = {};
+	m_evidence[l].reset();
 	m_legGrid.erase(l, m_legs[l].x, m_legs[l].y);
 	m_legs.remove(l);
 }
 
 void LastingState::setContactLeg(Id c, Id l)
 {
-	Contact& k = m_contacts[c];
-	if (k.leg == l) return;
-	if (k.leg == NONE)
-		m_contactGrid.erase(c, k.shapelet.x, k.shapelet.y);
+	Id& leg = m_contactLeg[static_cast<size_t>(c)];
+	const obs::Shapelet& k = m_contacts[c]->shapelet;
+	if (leg == l) return;
+	if (leg == NONE)
+		m_contactGrid.erase(c, k.x, k.y);
 	else
 	{
-		auto& v = m_legContacts[k.leg];
+		auto& v = m_legContacts[leg];
 		v.erase(std::remove(v.begin(), v.end(), c), v.end());
 	}
-	k.leg = l;
+	leg = l;
 	if (l == NONE)
-		m_contactGrid.insert(c, k.shapelet.x, k.shapelet.y);
+		m_contactGrid.insert(c, k.x, k.y);
 	else
 		m_legContacts[l].push_back(c);
 }
@@ -160,18 +187,26 @@ void LastingState::setContactLeg(Id c, Id l)
 void LastingState::extract(const std::vector<Id>& around, const Radii& radii, const ModelParams& model, Region& out)
 {
 	if (!(out.board.params() == model)) out.board = Blackboard(model);
-	++m_epoch;
+	if (++out.epoch == 0)  // wrapped: marks of 2^32 extractions ago would look fresh
+	{
+		for (auto* marks : {&out.tableMark, &out.legMark, &out.contactMark}) std::fill(marks->begin(), marks->end(), 0u);
+		out.epoch = 1;
+	}
+	growTo(out.tableMark, m_tables.capacity(), 0u);
+	growTo(out.legMark, m_legs.capacity(), 0u);
+	growTo(out.contactMark, m_contacts.capacity(), 0u);
+	const auto mark = [&out](std::vector<uint32_t>& marks, Id id) { return markOnce(marks, out.epoch, id); };
 	out.tables.clear(), out.legs.clear(), out.contacts.clear();
 	std::vector<Id> visitLegs, visitTables, contextTables, contextLegs;
 	const double halfDiagonal = model.maxDiagonal() / 2;
 	for (const Id a : around)
 	{
-		const double x = m_contacts[a].shapelet.x, y = m_contacts[a].shapelet.y;
+		const double x = m_contacts[a]->shapelet.x, y = m_contacts[a]->shapelet.y;
 		m_legGrid.forEachNear(x, y, radii.board, [&](Id l) {
 			const Leg& leg = m_legs[l];
 			const double d2 = dist2(leg.x, leg.y, x, y);
 			if (d2 > radii.board * radii.board) return;
-			if (mark(m_legMark, l)) out.legs.push_back(l);
+			if (mark(out.legMark, l)) out.legs.push_back(l);
 			if (d2 <= radii.visit * radii.visit) visitLegs.push_back(l);
 		});
 		// Tables with a corner near the contact: it may be one of their (invented) legs.
@@ -183,14 +218,14 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 				if (dist2(cx, cy, x, y) <= radii.visit * radii.visit)
 				{
 					visitTables.push_back(t);
-					if (mark(m_tableMark, t)) out.tables.push_back(t);
+					if (mark(out.tableMark, t)) out.tables.push_back(t);
 					return;
 				}
 			}
 		});
 		m_contactGrid.forEachNear(x, y, radii.board, [&](Id c) {
-			if (dist2(m_contacts[c].shapelet.x, m_contacts[c].shapelet.y, x, y) <= radii.board * radii.board &&
-				mark(m_contactMark, c))
+			if (dist2(m_contacts[c]->shapelet.x, m_contacts[c]->shapelet.y, x, y) <= radii.board * radii.board &&
+				mark(out.contactMark, c))
 				out.contacts.push_back(c);
 		});
 	}
@@ -198,26 +233,26 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 	for (size_t i = 0, n = out.legs.size(); i < n; i++)
 	{
 		const Id p = m_legs[out.legs[i]].parent;
-		if (p != NONE && mark(m_tableMark, p)) out.tables.push_back(p);
+		if (p != NONE && mark(out.tableMark, p)) out.tables.push_back(p);
 	}
 	for (const Id l : visitLegs)
 		if (m_legs[l].parent != NONE) visitTables.push_back(m_legs[l].parent);
 	for (const Id t : out.tables)
 		for (const Id l : m_tableLegs[t])
-			if (mark(m_legMark, l)) out.legs.push_back(l);
+			if (mark(out.legMark, l)) out.legs.push_back(l);
 	for (const Id l : out.legs)
 		for (const Id c : m_legContacts[l])
-			if (mark(m_contactMark, c)) out.contacts.push_back(c);
+			if (mark(out.contactMark, c)) out.contacts.push_back(c);
 	// Fixed context: what could overlap the board's hypotheses.
 	for (const Id a : around)
 	{
-		const double x = m_contacts[a].shapelet.x, y = m_contacts[a].shapelet.y;
+		const double x = m_contacts[a]->shapelet.x, y = m_contacts[a]->shapelet.y;
 		m_tableGrid.forEachNear(x, y, radii.context, [&](Id t) {
-			if (dist2(m_tables[t].x, m_tables[t].y, x, y) <= radii.context * radii.context && mark(m_tableMark, t))
+			if (dist2(m_tables[t].x, m_tables[t].y, x, y) <= radii.context * radii.context && mark(out.tableMark, t))
 				contextTables.push_back(t);
 		});
 		m_legGrid.forEachNear(x, y, radii.context, [&](Id l) {
-			if (dist2(m_legs[l].x, m_legs[l].y, x, y) <= radii.context * radii.context && mark(m_legMark, l))
+			if (dist2(m_legs[l].x, m_legs[l].y, x, y) <= radii.context * radii.context && mark(out.legMark, l))
 				contextLegs.push_back(l);
 		});
 	}
@@ -231,7 +266,7 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 	};
 	std::sort(out.tables.begin(), out.tables.end(), byPose(m_tables));
 	std::sort(out.legs.begin(), out.legs.end(), byPose(m_legs));
-	std::sort(out.contacts.begin(), out.contacts.end(), [&](Id a, Id b) { return m_contacts[a].seq < m_contacts[b].seq; });
+	std::sort(out.contacts.begin(), out.contacts.end(), [&](Id a, Id b) { return m_contacts[a]->seq < m_contacts[b]->seq; });
 	std::sort(contextTables.begin(), contextTables.end(), byPose(m_tables));
 	std::sort(contextLegs.begin(), contextLegs.end(), byPose(m_legs));
 	// Walls whose slab comes within the board radius of a new contact (in store order).
@@ -240,39 +275,39 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 	{
 		const OrientedRect r = m_walls[w].wall.rect();
 		for (const Id a : around)
-			if (r.perimeter(m_contacts[a].shapelet.x, m_contacts[a].shapelet.y).distance <= radii.board)
+			if (r.perimeter(m_contacts[a]->shapelet.x, m_contacts[a]->shapelet.y).distance <= radii.board)
 			{
 				out.walls.push_back(w);
 				break;
 			}
 	}
 
-	// The board; m_tableBoard and m_legBoard map store ids to board ids for this extraction.
+	// The board; out.tableBoard and out.legBoard map store ids to board ids for this extraction.
 	std::vector<obs::Shapelet> shapelets;
 	shapelets.reserve(out.contacts.size());
-	for (const Id c : out.contacts) shapelets.push_back(m_contacts[c].shapelet);
+	for (const Id c : out.contacts) shapelets.push_back(m_contacts[c]->shapelet);
 	Blackboard& bb = out.board;
 	bb.reset(shapelets);
-	growTo(m_tableBoard, m_tables.capacity(), NONE);
-	growTo(m_legBoard, m_legs.capacity(), NONE);
-	for (const Id t : out.tables) m_tableBoard[static_cast<size_t>(t)] = bb.addTable(m_tables[t]);
+	growTo(out.tableBoard, m_tables.capacity(), NONE);
+	growTo(out.legBoard, m_legs.capacity(), NONE);
+	for (const Id t : out.tables) out.tableBoard[static_cast<size_t>(t)] = bb.addTable(m_tables[t]);
 	for (const Id l : out.legs)
 	{
 		Leg leg = m_legs[l];
-		leg.parent = leg.parent == NONE ? NONE : m_tableBoard[static_cast<size_t>(leg.parent)];
-		m_legBoard[static_cast<size_t>(l)] = bb.addLeg(leg, m_evidence[l]);
+		leg.parent = leg.parent == NONE ? NONE : out.tableBoard[static_cast<size_t>(leg.parent)];
+		out.legBoard[static_cast<size_t>(l)] = bb.addLeg(leg, evidence(l));
 	}
 	for (size_t i = 0; i < out.contacts.size(); i++)
 	{
-		const Id l = m_contacts[out.contacts[i]].leg;
-		if (l != NONE) bb.setShapeletParent(i, m_legBoard[static_cast<size_t>(l)]);
+		const Id l = m_contactLeg[out.contacts[i]];
+		if (l != NONE) bb.setShapeletParent(i, out.legBoard[static_cast<size_t>(l)]);
 	}
 	for (const size_t w : out.walls) bb.addWall(m_walls[w].wall, m_walls[w].evidence);
 	// Dormant: everything but the visited legs and tables.
 	for (size_t i = 0; i < out.tables.size(); i++) bb.setTableDormant(static_cast<Id>(i), true);
 	for (size_t i = 0; i < out.legs.size(); i++) bb.setLegDormant(static_cast<Id>(i), true);
-	for (const Id t : visitTables) bb.setTableDormant(m_tableBoard[static_cast<size_t>(t)], false);
-	for (const Id l : visitLegs) bb.setLegDormant(m_legBoard[static_cast<size_t>(l)], false);
+	for (const Id t : visitTables) bb.setTableDormant(out.tableBoard[static_cast<size_t>(t)], false);
+	for (const Id l : visitLegs) bb.setLegDormant(out.legBoard[static_cast<size_t>(l)], false);
 	for (const Id t : contextTables) bb.addContextTable(m_tables[t]);
 	for (const Id l : contextLegs) bb.addContextLeg(m_legs[l]);
 }
@@ -292,6 +327,10 @@ void LastingState::replace(
 		wallIndex[static_cast<size_t>(w)] = m_walls.size();
 		m_walls.push_back({solved.wall(w), solved.wallEvidence(w), wallExistence.at(static_cast<size_t>(w))});
 	}
+	// The region's legs' evidence, shared again by the legs that come back with it unchanged.
+	std::vector<std::shared_ptr<const LegEvidence>> before;
+	before.reserve(r.legs.size());
+	for (const Id l : r.legs) before.push_back(m_evidence[l]);
 	for (const Id l : r.legs) removeLeg(l);
 	for (const Id t : r.tables) removeTable(t);
 	newTables.assign(static_cast<size_t>(solved.tableIdBound()), NONE);
@@ -303,7 +342,10 @@ void LastingState::replace(
 		if (!solved.hasLeg(l)) continue;
 		Leg leg = solved.leg(l);
 		if (leg.parent != NONE) leg.parent = newTables[leg.parent];
-		newLegs[l] = addLeg(leg, solved.evidence(l));
+		const LegEvidence& e = solved.evidence(l);
+		const bool same = static_cast<size_t>(l) < before.size() && before[static_cast<size_t>(l)] &&
+						  *before[static_cast<size_t>(l)] == e;
+		newLegs[l] = addLeg(leg, same ? before[static_cast<size_t>(l)] : share(e));
 	}
 	for (size_t i = 0; i < r.contacts.size(); i++)
 	{
@@ -312,41 +354,44 @@ void LastingState::replace(
 		if (w == NONE) continue;
 		// A contact a wall explains is folded into the wall's evidence and leaves the store.
 		StoredWall& sw = m_walls[wallIndex[static_cast<size_t>(w)]];
-		sw.evidence.add(m_contacts[r.contacts[i]].shapelet, sw.wall, solved.wallFrame(w), model);
-		m_contactGrid.erase(r.contacts[i], m_contacts[r.contacts[i]].shapelet.x, m_contacts[r.contacts[i]].shapelet.y);
-		m_contacts.remove(r.contacts[i]);
+		sw.evidence.add(m_contacts[r.contacts[i]]->shapelet, sw.wall, solved.wallFrame(w), model);
+		m_contactGrid.erase(r.contacts[i], m_contacts[r.contacts[i]]->shapelet.x, m_contacts[r.contacts[i]]->shapelet.y);
+		dropContact(r.contacts[i]);
 	}
 }
 
 void LastingState::fold(Id l, size_t keep, const ModelParams& model)
 {
 	auto& contacts = m_legContacts[l];
+	if (contacts.size() <= keep) return;
+	LegEvidence folded = evidence(l);  // this copy's own from now on
 	while (contacts.size() > keep)
 	{
 		const auto oldest = std::min_element(contacts.begin(), contacts.end(), [&](Id a, Id b) {
-			return m_contacts[a].seq < m_contacts[b].seq;
+			return m_contacts[a]->seq < m_contacts[b]->seq;
 		});
 		const Id c = *oldest;
-		m_evidence[l].add(m_contacts[c].shapelet, m_legs[l], model);
+		folded.add(m_contacts[c]->shapelet, m_legs[l], model);
 		contacts.erase(oldest);
-		m_contacts.remove(c);
+		dropContact(c);
 	}
+	m_evidence[l] = share(folded);
 }
 
 size_t LastingState::forgetUnexplained(Id c, size_t keep, double radius)
 {
-	const obs::Shapelet s = m_contacts[c].shapelet;
+	const obs::Shapelet s = m_contacts[c]->shapelet;
 	std::vector<Id> near;
 	m_contactGrid.forEachNear(s.x, s.y, radius, [&](Id o) {
-		if (dist2(m_contacts[o].shapelet.x, m_contacts[o].shapelet.y, s.x, s.y) <= radius * radius) near.push_back(o);
+		if (dist2(m_contacts[o]->shapelet.x, m_contacts[o]->shapelet.y, s.x, s.y) <= radius * radius) near.push_back(o);
 	});
 	if (near.size() <= keep) return 0;
-	std::sort(near.begin(), near.end(), [&](Id a, Id b) { return m_contacts[a].seq < m_contacts[b].seq; });
+	std::sort(near.begin(), near.end(), [&](Id a, Id b) { return m_contacts[a]->seq < m_contacts[b]->seq; });
 	const size_t forget = near.size() - keep;
 	for (size_t i = 0; i < forget; i++)
 	{
-		m_contactGrid.erase(near[i], m_contacts[near[i]].shapelet.x, m_contacts[near[i]].shapelet.y);
-		m_contacts.remove(near[i]);
+		m_contactGrid.erase(near[i], m_contacts[near[i]]->shapelet.x, m_contacts[near[i]]->shapelet.y);
+		dropContact(near[i]);
 	}
 	return forget;
 }
@@ -374,12 +419,11 @@ void LastingState::restore(
 			l.parent = tableIds.at(static_cast<size_t>(l.parent));
 			l.corner = logLegGivenTable(l, m_tables[l.parent], model).corner;  // argmin of eq. 6
 		}
-		legIds.push_back(addLeg(l, evidence[i]));
+		legIds.push_back(addLeg(l, share(evidence[i])));
 	}
 	for (const Contact& k : contacts)
 	{
-		const Id c = m_contacts.add({k.shapelet, NONE, k.seq});
-		growTo(m_contactMark, m_contacts.capacity(), 0u);
+		const Id c = newContact(k.shapelet, k.seq);
 		m_contactGrid.insert(c, k.shapelet.x, k.shapelet.y);
 		if (k.leg != NONE) setContactLeg(c, legIds.at(static_cast<size_t>(k.leg)));
 	}

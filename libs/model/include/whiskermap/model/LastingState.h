@@ -6,6 +6,7 @@
 #include <whiskermap/obs/Shapelet.h>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace whiskermap::model
@@ -25,7 +26,8 @@ namespace whiskermap::model
 class LastingState
 {
    public:
-	/** A contact kept explicitly: data of the next local problems around it. */
+	/** A contact kept explicitly: data of the next local problems around it (contact()'s
+	 *  view; the store shares the reading and its insertion number between copies). */
 	struct Contact
 	{
 		obs::Shapelet shapelet;
@@ -62,6 +64,11 @@ class LastingState
 		Blackboard board;
 		std::vector<Id> tables, legs, contacts;  ///< store ids of the board's tables, legs, shapelets
 		std::vector<size_t> walls;  ///< indices into walls() of the board's walls (board ids 0..)
+		/** extract()'s scratch, for any state: epoch marks (a fresh set per extraction,
+		 *  cleared in O(1)) and store id -> board id of the last extraction. */
+		uint32_t epoch = 0;
+		std::vector<uint32_t> tableMark, legMark, contactMark;
+		std::vector<Id> tableBoard, legBoard;
 	};
 
 	explicit LastingState(const ModelParams& sizes = {});
@@ -123,15 +130,18 @@ class LastingState
 	const ChainSpread& chainSpread(Id t) const { return m_chainSpread[t]; }
 	void setChainSpread(Id t, const ChainSpread& s) { m_chainSpread[t] = s; }
 	const Leg& leg(Id l) const { return m_legs[l]; }
-	const LegEvidence& evidence(Id l) const { return m_evidence[l]; }
-	const Contact& contact(Id c) const { return m_contacts[c]; }
+	/** Leg l's folded evidence (empty when it folded none). */
+	const LegEvidence& evidence(Id l) const;
+	/** Contact c's reading: one object for every copy of the state that holds the contact. */
+	const obs::Shapelet& shapelet(Id c) const { return m_contacts[c]->shapelet; }
+	Contact contact(Id c) const { return {m_contacts[c]->shapelet, m_contactLeg[static_cast<size_t>(c)], m_contacts[c]->seq}; }
 	const std::vector<Id>& legsOf(Id t) const { return m_tableLegs[t]; }
 	const std::vector<Id>& contactsOf(Id l) const { return m_legContacts[l]; }
 	size_t tableCount() const { return m_tables.count(); }
 	size_t legCount() const { return m_legs.count(); }
 	size_t contactCount() const { return m_contacts.count(); }
 	/** Contacts explained by leg l: explicit plus folded. */
-	uint64_t contactsExplained(Id l) const { return m_legContacts[l].size() + m_evidence[l].count(); }
+	uint64_t contactsExplained(Id l) const { return m_legContacts[l].size() + (m_evidence[l] ? m_evidence[l]->count() : 0); }
 	uint64_t nextSeq() const { return m_seq; }
 
 	/** Rebuilds a state from its parts (deserialization): tables with their existence and
@@ -145,28 +155,36 @@ class LastingState
 
    private:
 	Id addTable(const Table& t, double existence);
-	Id addLeg(const Leg& l, const LegEvidence& e);  ///< links to l.parent (a store id)
+	Id addLeg(const Leg& l, std::shared_ptr<const LegEvidence> e);  ///< links to l.parent (a store id)
 	void removeTable(Id t);  ///< after its legs are gone or relinked
 	void removeLeg(Id l);  ///< its contacts become unexplained
 	void setContactLeg(Id c, Id l);
-	/** Epoch marks: a fresh set per extraction, cleared in O(1). */
-	bool mark(std::vector<uint32_t>& marks, Id id);
+	Id newContact(const obs::Shapelet& s, uint64_t seq);  ///< unexplained, in no grid yet
+	void dropContact(Id c);  ///< after it left its grid or its leg
 
 	ModelParams m_sizes;  ///< table and leg sizes: search radii, cell sizes
 	SlotVector<Table> m_tables;
 	SlotVector<Leg> m_legs;
-	SlotVector<Contact> m_contacts;
+	/** A contact's reading and insertion number: immutable, shared by the copies of the state
+	 *  that hold the contact (doc/map-plugin.md, "Copies"). */
+	struct Reading
+	{
+		obs::Shapelet shapelet;
+		uint64_t seq = 0;
+	};
+	SlotVector<std::shared_ptr<const Reading>> m_contacts;  ///< null in free slots
+	std::vector<Id> m_contactLeg;  ///< per contact, its explaining leg (NONE: none)
 	std::vector<double> m_existence;
 	std::vector<Table> m_reported;
 	std::vector<ChainSpread> m_chainSpread;
-	std::vector<LegEvidence> m_evidence;
+	/** Per leg, its folded evidence: null when empty, else immutable and shared by the copies
+	 *  of the state (a particle filter's resampled maps) until one of them folds into it,
+	 *  which gives that copy its own (doc/map-plugin.md, "Copies"). */
+	std::vector<std::shared_ptr<const LegEvidence>> m_evidence;
 	std::vector<std::vector<Id>> m_tableLegs, m_legContacts;
 	SpatialGrid m_tableGrid, m_legGrid, m_contactGrid;  ///< contacts: the unexplained ones
 	double m_maxLegRadius = 0;  ///< the largest half-diagonal of a leg ever added
 	uint64_t m_seq = 0;
-	uint32_t m_epoch = 0;
-	std::vector<uint32_t> m_tableMark, m_legMark, m_contactMark;
-	std::vector<Id> m_tableBoard, m_legBoard;  ///< store id -> board id, for the last extraction
 	std::vector<StoredWall> m_walls;  ///< few per map: scanned linearly
 };
 }  // namespace whiskermap::model
