@@ -19,14 +19,6 @@ void growTo(std::vector<T>& v, Id bound, const T& value = T())
 	if (v.size() < static_cast<size_t>(bound)) v.resize(static_cast<size_t>(bound), value);
 }
 
-/** Marks `id` with `epoch`; false when it already was (one mark per extraction). */
-bool markOnce(std::vector<uint32_t>& marks, uint32_t epoch, Id id)
-{
-	if (marks[static_cast<size_t>(id)] == epoch) return false;
-	marks[static_cast<size_t>(id)] = epoch;
-	return true;
-}
-
 /** Evidence as the store keeps it: null when empty, else an immutable shared copy. */
 std::shared_ptr<const LegEvidence> share(const LegEvidence& e)
 {
@@ -52,9 +44,7 @@ const LegEvidence& LastingState::evidence(Id l) const
 
 Id LastingState::addContact(const obs::Shapelet& s)
 {
-	const Id c = newContact(s, m_seq++);
-	m_contactGrid.insert(c, s.x, s.y);
-	return c;
+	return newContact(s, m_seq++);
 }
 
 Id LastingState::newContact(const obs::Shapelet& s, uint64_t seq)
@@ -62,11 +52,13 @@ Id LastingState::newContact(const obs::Shapelet& s, uint64_t seq)
 	const Id c = m_contacts.add(std::make_shared<const Reading>(Reading{s, seq}));
 	growTo(m_contactLeg, m_contacts.capacity(), NONE);
 	m_contactLeg[static_cast<size_t>(c)] = NONE;
+	m_contactGrid.insert(c, s.x, s.y);
 	return c;
 }
 
 void LastingState::dropContact(Id c)
 {
+	if (m_contactLeg[static_cast<size_t>(c)] == NONE) m_contactGrid.erase(c, shapelet(c).x, shapelet(c).y);
 	m_contacts[c].reset();  // the reading goes when no copy of the state holds it
 	m_contacts.remove(c);
 }
@@ -168,7 +160,7 @@ void LastingState::removeLeg(Id l)
 void LastingState::setContactLeg(Id c, Id l)
 {
 	Id& leg = m_contactLeg[static_cast<size_t>(c)];
-	const obs::Shapelet& k = m_contacts[c]->shapelet;
+	const obs::Shapelet& k = shapelet(c);
 	if (leg == l) return;
 	if (leg == NONE)
 		m_contactGrid.erase(c, k.x, k.y);
@@ -195,13 +187,17 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 	growTo(out.tableMark, m_tables.capacity(), 0u);
 	growTo(out.legMark, m_legs.capacity(), 0u);
 	growTo(out.contactMark, m_contacts.capacity(), 0u);
-	const auto mark = [&out](std::vector<uint32_t>& marks, Id id) { return markOnce(marks, out.epoch, id); };
+	const auto mark = [&out](std::vector<uint32_t>& marks, Id id) {  // false when already marked this extraction
+		if (marks[static_cast<size_t>(id)] == out.epoch) return false;
+		marks[static_cast<size_t>(id)] = out.epoch;
+		return true;
+	};
 	out.tables.clear(), out.legs.clear(), out.contacts.clear();
 	std::vector<Id> visitLegs, visitTables, contextTables, contextLegs;
 	const double halfDiagonal = model.maxDiagonal() / 2;
 	for (const Id a : around)
 	{
-		const double x = m_contacts[a]->shapelet.x, y = m_contacts[a]->shapelet.y;
+		const double x = shapelet(a).x, y = shapelet(a).y;
 		m_legGrid.forEachNear(x, y, radii.board, [&](Id l) {
 			const Leg& leg = m_legs[l];
 			const double d2 = dist2(leg.x, leg.y, x, y);
@@ -224,7 +220,7 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 			}
 		});
 		m_contactGrid.forEachNear(x, y, radii.board, [&](Id c) {
-			if (dist2(m_contacts[c]->shapelet.x, m_contacts[c]->shapelet.y, x, y) <= radii.board * radii.board &&
+			if (dist2(shapelet(c).x, shapelet(c).y, x, y) <= radii.board * radii.board &&
 				mark(out.contactMark, c))
 				out.contacts.push_back(c);
 		});
@@ -246,7 +242,7 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 	// Fixed context: what could overlap the board's hypotheses.
 	for (const Id a : around)
 	{
-		const double x = m_contacts[a]->shapelet.x, y = m_contacts[a]->shapelet.y;
+		const double x = shapelet(a).x, y = shapelet(a).y;
 		m_tableGrid.forEachNear(x, y, radii.context, [&](Id t) {
 			if (dist2(m_tables[t].x, m_tables[t].y, x, y) <= radii.context * radii.context && mark(out.tableMark, t))
 				contextTables.push_back(t);
@@ -275,7 +271,7 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 	{
 		const OrientedRect r = m_walls[w].wall.rect();
 		for (const Id a : around)
-			if (r.perimeter(m_contacts[a]->shapelet.x, m_contacts[a]->shapelet.y).distance <= radii.board)
+			if (r.perimeter(shapelet(a).x, shapelet(a).y).distance <= radii.board)
 			{
 				out.walls.push_back(w);
 				break;
@@ -285,7 +281,7 @@ void LastingState::extract(const std::vector<Id>& around, const Radii& radii, co
 	// The board; out.tableBoard and out.legBoard map store ids to board ids for this extraction.
 	std::vector<obs::Shapelet> shapelets;
 	shapelets.reserve(out.contacts.size());
-	for (const Id c : out.contacts) shapelets.push_back(m_contacts[c]->shapelet);
+	for (const Id c : out.contacts) shapelets.push_back(shapelet(c));
 	Blackboard& bb = out.board;
 	bb.reset(shapelets);
 	growTo(out.tableBoard, m_tables.capacity(), NONE);
@@ -354,8 +350,7 @@ void LastingState::replace(
 		if (w == NONE) continue;
 		// A contact a wall explains is folded into the wall's evidence and leaves the store.
 		StoredWall& sw = m_walls[wallIndex[static_cast<size_t>(w)]];
-		sw.evidence.add(m_contacts[r.contacts[i]]->shapelet, sw.wall, solved.wallFrame(w), model);
-		m_contactGrid.erase(r.contacts[i], m_contacts[r.contacts[i]]->shapelet.x, m_contacts[r.contacts[i]]->shapelet.y);
+		sw.evidence.add(shapelet(r.contacts[i]), sw.wall, solved.wallFrame(w), model);
 		dropContact(r.contacts[i]);
 	}
 }
@@ -371,7 +366,7 @@ void LastingState::fold(Id l, size_t keep, const ModelParams& model)
 			return m_contacts[a]->seq < m_contacts[b]->seq;
 		});
 		const Id c = *oldest;
-		folded.add(m_contacts[c]->shapelet, m_legs[l], model);
+		folded.add(shapelet(c), m_legs[l], model);
 		contacts.erase(oldest);
 		dropContact(c);
 	}
@@ -380,19 +375,15 @@ void LastingState::fold(Id l, size_t keep, const ModelParams& model)
 
 size_t LastingState::forgetUnexplained(Id c, size_t keep, double radius)
 {
-	const obs::Shapelet s = m_contacts[c]->shapelet;
+	const obs::Shapelet s = shapelet(c);
 	std::vector<Id> near;
 	m_contactGrid.forEachNear(s.x, s.y, radius, [&](Id o) {
-		if (dist2(m_contacts[o]->shapelet.x, m_contacts[o]->shapelet.y, s.x, s.y) <= radius * radius) near.push_back(o);
+		if (dist2(shapelet(o).x, shapelet(o).y, s.x, s.y) <= radius * radius) near.push_back(o);
 	});
 	if (near.size() <= keep) return 0;
 	std::sort(near.begin(), near.end(), [&](Id a, Id b) { return m_contacts[a]->seq < m_contacts[b]->seq; });
 	const size_t forget = near.size() - keep;
-	for (size_t i = 0; i < forget; i++)
-	{
-		m_contactGrid.erase(near[i], m_contacts[near[i]]->shapelet.x, m_contacts[near[i]]->shapelet.y);
-		dropContact(near[i]);
-	}
+	for (size_t i = 0; i < forget; i++) dropContact(near[i]);
 	return forget;
 }
 
@@ -424,7 +415,6 @@ void LastingState::restore(
 	for (const Contact& k : contacts)
 	{
 		const Id c = newContact(k.shapelet, k.seq);
-		m_contactGrid.insert(c, k.shapelet.x, k.shapelet.y);
 		if (k.leg != NONE) setContactLeg(c, legIds.at(static_cast<size_t>(k.leg)));
 	}
 	m_seq = seq;

@@ -141,7 +141,7 @@ class LastingState
 	size_t legCount() const { return m_legs.count(); }
 	size_t contactCount() const { return m_contacts.count(); }
 	/** Contacts explained by leg l: explicit plus folded. */
-	uint64_t contactsExplained(Id l) const { return m_legContacts[l].size() + (m_evidence[l] ? m_evidence[l]->count() : 0); }
+	uint64_t contactsExplained(Id l) const { return m_legContacts[l].size() + evidence(l).count(); }
 	uint64_t nextSeq() const { return m_seq; }
 
 	/** Rebuilds a state from its parts (deserialization): tables with their existence and
@@ -159,8 +159,8 @@ class LastingState
 	void removeTable(Id t);  ///< after its legs are gone or relinked
 	void removeLeg(Id l);  ///< its contacts become unexplained
 	void setContactLeg(Id c, Id l);
-	Id newContact(const obs::Shapelet& s, uint64_t seq);  ///< unexplained, in no grid yet
-	void dropContact(Id c);  ///< after it left its grid or its leg
+	Id newContact(const obs::Shapelet& s, uint64_t seq);  ///< unexplained (in the contact grid)
+	void dropContact(Id c);  ///< out of the contact grid if unexplained; an explained one must have left its leg's list
 
 	ModelParams m_sizes;  ///< table and leg sizes: search radii, cell sizes
 	SlotVector<Table> m_tables;
