@@ -6,27 +6,34 @@
 #include <whiskermap/core/Error.h>
 #include <whiskermap/obs/RawlogReader.h>
 
+#include <optional>
+
 namespace whiskermap::cli
 {
-void SlamSmoothing::add(const obs::RawlogReader::Sweep& sw)
+smooth::PathSmoother::TInput SlamSmoothing::read(size_t sweeps) const
 {
-	auto& in = m_input;
-	const mrpt::poses::CPose2D u = sw.robotPose - (m_last ? *m_last : sw.robotPose);
-	m_last = sw.robotPose;
-	mrpt::obs::CActionRobotMovement2D move;
-	move.computeFromOdometry(u, m_slam.motionModel(u));
-	const auto i = static_cast<uint32_t>(in.increments.size());
-	in.increments.emplace_back(u.x(), u.y(), u.phi());
-	in.covariances.push_back(move.poseChange->getCovariance().asEigen());
-	const auto contacts = baseline::Contact::of({mrpt::poses::CPose2D(), sw.obs}, i);  // robot frame
-	in.contacts.insert(in.contacts.end(), contacts.begin(), contacts.end());
+	smooth::PathSmoother::TInput in;
+	std::optional<mrpt::poses::CPose2D> last;  // the previous sweep's odometry
+	obs::RawlogReader::forEach(m_rawlog, [&](const obs::RawlogReader::Sweep& sw) {
+		if (in.increments.size() >= sweeps) return;
+		const mrpt::poses::CPose2D u = sw.robotPose - (last ? *last : sw.robotPose);
+		last = sw.robotPose;
+		mrpt::obs::CActionRobotMovement2D move;
+		move.computeFromOdometry(u, m_slam.motionModel(u));
+		const auto i = static_cast<uint32_t>(in.increments.size());
+		in.increments.emplace_back(u.x(), u.y(), u.phi());
+		in.covariances.push_back(move.poseChange->getCovariance().asEigen());
+		const auto contacts = baseline::Contact::of({mrpt::poses::CPose2D(), sw.obs}, i);  // robot frame
+		in.contacts.insert(in.contacts.end(), contacts.begin(), contacts.end());
+	});
+	return in;
 }
 
 smooth::PathSmoother::TResult SlamSmoothing::run(
 	std::vector<Eigen::Vector3d> path, std::vector<world::Obstacle> solids, const smooth::TSmoothParams& params,
 	const mrpt::maps::TSetOfMetricMapInitializers& maps) const
 {
-	auto in = m_input;
+	auto in = read(path.size());
 	in.path = std::move(path), in.solids = std::move(solids);
 	auto result = smooth::PathSmoother::run(in, params);
 	for (unsigned pass = 1; pass < params.passes && result.rounds > 0; pass++)  // no rounds: nothing estimated (exact odometry), nothing to redo

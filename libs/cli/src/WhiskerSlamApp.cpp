@@ -136,8 +136,6 @@ int run(Options& o)
 		estimated.write(times.front(), p.asTPose());
 		times.pop_front();
 	};
-	std::optional<SlamSmoothing> smoother;
-	if (smoothing.enabled) smoother.emplace(o.input, params);
 	const bool bar = !o.quiet && ::isatty(STDERR_FILENO);
 	size_t k = 0;
 	obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
@@ -145,7 +143,6 @@ int run(Options& o)
 		const double t = mrpt::Clock::toDouble(sw.obs->timestamp);
 		odometry.write(t, sw.robotPose);
 		times.push_back(t);
-		if (smoother) smoother->add(sw);
 		const auto& step = slam.step(sw);
 		slam.settle(settled);
 		result.steps.add(step.ms, step.ess, step.resampled, slam.paths().nodes());
@@ -164,14 +161,14 @@ int run(Options& o)
 	odometry.close();
 	for (const auto& p : slam.bestPath()) settled(p);
 	std::optional<smooth::PathSmoother::TResult> smoothed;
-	if (smoother)
+	if (smoothing.enabled)
 	{
 		const auto ts = std::chrono::steady_clock::now();
 		std::vector<Eigen::Vector3d> path;
 		estimated.rewind();
 		double t;
 		for (mrpt::math::TPose2D p; path.size() < n && estimated.next(t, p);) path.emplace_back(p.x, p.y, p.phi);
-		smoothed = smoother->run(std::move(path), slam.bestMap().mappedSolids(), smoothing, inits);
+		smoothed = SlamSmoothing(o.input, params).run(std::move(path), slam.bestMap().mappedSolids(), smoothing, inits);
 		result.smoothing = &*smoothed;
 		result.smoothingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count();
 	}
