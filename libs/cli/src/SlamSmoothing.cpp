@@ -7,6 +7,7 @@
 #include <whiskermap/obs/RawlogReader.h>
 
 #include <optional>
+#include <string>
 
 namespace whiskermap::cli
 {
@@ -26,6 +27,9 @@ smooth::PathSmoother::TInput SlamSmoothing::read(size_t sweeps) const
 		const auto contacts = baseline::Contact::of({mrpt::poses::CPose2D(), sw.obs}, i);  // robot frame
 		in.contacts.insert(in.contacts.end(), contacts.begin(), contacts.end());
 	});
+	if (in.increments.size() < sweeps)
+		throw core::Error(m_rawlog + ": " + std::to_string(in.increments.size()) + " sweeps where the filter read " +
+						  std::to_string(sweeps) + " (the file changed during the run?)");
 	return in;
 }
 

@@ -22,18 +22,20 @@ class SlamSmoothing
 	/** `rawlog`: the filter's input, read again by run(). */
 	SlamSmoothing(const std::string& rawlog, const slam::TSlamParams& slam) : m_rawlog(rawlog), m_slam(slam) {}
 
-	/** Smooths `path` (one pose per sweep of the rawlog's first path.size()) against `solids` (the best particle's mapped legs and walls); then, for
-	 *  each further pass (TSmoothParams::passes), maps the sweeps afresh at the smoothed path
-	 *  (a map of `maps`) and smooths again from it against that map's solids. The result is
-	 *  the last pass's, with costBefore at `path` (the first pass's) and the rounds and
-	 *  iterations of all passes. */
+	/** Smooths `path` (one pose per sweep of the rawlog's first path.size(); fewer sweeps
+	 *  there: core::Error naming the rawlog) against `solids` (the best particle's mapped
+	 *  legs and walls); then, for each further pass (TSmoothParams::passes), maps the sweeps
+	 *  afresh at the smoothed path (a map of `maps`) and smooths again from it against that
+	 *  map's solids. The result is the last pass's, with costBefore at `path` (the first
+	 *  pass's) and the rounds and iterations of all passes. */
 	smooth::PathSmoother::TResult run(
 		std::vector<Eigen::Vector3d> path, std::vector<world::Obstacle> solids, const smooth::TSmoothParams& params,
 		const mrpt::maps::TSetOfMetricMapInitializers& maps) const;
 
    private:
 	/** The odometry increments, their covariances and the contacts of the rawlog's first
-	 *  `sweeps` sweeps (no path, no solids). */
+	 *  `sweeps` sweeps (no path, no solids). Throws core::Error naming the rawlog when it
+	 *  holds fewer (changed since the filter read it) or is damaged. */
 	smooth::PathSmoother::TInput read(size_t sweeps) const;
 
 	std::string m_rawlog;
