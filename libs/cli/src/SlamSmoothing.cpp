@@ -27,10 +27,14 @@ smooth::PathSmoother::TInput SlamSmoothing::read(size_t sweeps) const
 		const auto contacts = baseline::Contact::of({mrpt::poses::CPose2D(), sw.obs}, i);  // robot frame
 		in.contacts.insert(in.contacts.end(), contacts.begin(), contacts.end());
 	});
-	if (in.increments.size() < sweeps)
-		throw core::Error(m_rawlog + ": " + std::to_string(in.increments.size()) + " sweeps where the filter read " +
-						  std::to_string(sweeps) + " (the file changed during the run?)");
+	if (in.increments.size() < sweeps) throw shorter(m_rawlog, in.increments.size(), sweeps);
 	return in;
+}
+
+core::Error SlamSmoothing::shorter(const std::string& rawlog, size_t found, size_t read)
+{
+	return core::Error(rawlog + ": " + std::to_string(found) + " sweeps where the filter read " + std::to_string(read) +
+					   " (the file changed during the run?)");
 }
 
 smooth::PathSmoother::TResult SlamSmoothing::run(

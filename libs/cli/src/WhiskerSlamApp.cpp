@@ -196,9 +196,7 @@ int run(Options& o)
 		runner.add({at, sw.obs});
 		k++;
 	});
-	if (k < n)
-		throw core::Error(o.input + ": " + std::to_string(k) + " sweeps where the filter read " + std::to_string(n) +
-						  " (the file changed during the run?)");
+	if (k < n) throw SlamSmoothing::shorter(o.input, k, n);
 	runner.flush();
 	estimatedText.close();
 	filterText.close();

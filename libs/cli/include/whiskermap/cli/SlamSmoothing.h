@@ -1,5 +1,6 @@
 #pragma once
 #include <mrpt/maps/TMetricMapInitializer.h>
+#include <whiskermap/core/Error.h>
 #include <whiskermap/obs/RawlogReader.h>
 #include <whiskermap/slam/TSlamParams.h>
 #include <whiskermap/smooth/PathSmoother.h>
@@ -31,6 +32,10 @@ class SlamSmoothing
 	smooth::PathSmoother::TResult run(
 		std::vector<Eigen::Vector3d> path, std::vector<world::Obstacle> solids, const smooth::TSmoothParams& params,
 		const mrpt::maps::TSetOfMetricMapInitializers& maps) const;
+
+	/** The error for a rawlog read again after the filter that holds `found` sweeps where the
+	 *  filter read `read` (the file changed during the run). */
+	static core::Error shorter(const std::string& rawlog, size_t found, size_t read);
 
    private:
 	/** The odometry increments, their covariances and the contacts of the rawlog's first
