@@ -37,7 +37,8 @@ ate = lambda k: s[k]["trajectory"]["ate_rmse_m"] if k in s else float("nan")
 def maps(when):  # summed over the particles
     m = s["filter_maps"][when]
     return (f"{m['tables']} tables, {m['legs']} legs, "
-            f"{m['contacts_explained'] + m['contacts_unexplained']} contacts ({m['contacts_unexplained']} unexplained)")
+            f"{m['contacts_explained'] + m['contacts_unexplained']} contacts ({m['contacts_unexplained']} unexplained), "
+            f"{m.get('lasting_chunks_shared', 0)} of {m.get('lasting_chunks', 0)} chunks shared")
 print(f"explore path {path_seed}, {odo} odometry, {s['particles_config']} particles asked ({s['particles']} ran), seed {seed}, {s['sweeps']} sweeps: filter peak RSS "
       f"{rss['first_tenth']:.1f} -> {rss['end']:.1f} MB, live heap {heap['first_tenth']:.1f} -> {heap['end']:.1f} MB "
       f"(after the first tenth -> the last sweep); the particles' maps {maps('first_tenth')} -> {maps('end')}; "

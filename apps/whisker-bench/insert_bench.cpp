@@ -1,6 +1,6 @@
 // whisker-insert-bench: the time of each insertion into a CHierarchicalObjectMap (lasting mode
 // by default), over a whole rawlog, as a distribution: median, p95, max and mean wall time and
-// thread CPU time per sweep, the map's size at the end, the time of a copy of it (the two ways
+// thread CPU time per sweep, the map's size at the end, the time and heap of a copy of it (the two ways
 // a particle filter's resampling may copy it) and the process's peak RSS. The sweeps
 // are streamed (one in memory at a time). --repeat N maps the log N times and adds, per
 // insertion, the least time over the runs (the uncontended estimate). Figures and commands: doc/benchmarks.md, "Lasting
@@ -10,6 +10,7 @@
 #include <sys/resource.h>
 #include <whiskermap/cli/runApp.h>
 #include <whiskermap/core/Error.h>
+#include <whiskermap/core/heapInUseMb.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/maps/MapConfig.h>
 #include <whiskermap/obs/RawlogReader.h>
@@ -108,10 +109,15 @@ Times mapOnce(const std::string& config, const std::string& mode, const std::str
 			const maps::CHierarchicalObjectMap copy(*map);
 			shared = map->sweptGrid().sharedChunks();
 		});
+		// What a copy adds to the heap (its share of ten copies kept at once; NaN under ASan).
+		const double before = core::heapInUseMb();
+		const std::vector<maps::CHierarchicalObjectMap> copies(10, *map);
+		const double heapKb = (core::heapInUseMb() - before) / 10 * 1024;
+		const auto lasting = copies[0].lastingMap().state().sharing();
 		std::printf(
 			"map copy, median of 51: %.3f ms as MRPT's CMultiMetricMap copy (serialized), %.3f ms by the copy "
-			"constructor (swept grid chunks shared: %zu of %zu)\n",
-			serialized, cloned, shared, map->sweptGrid().chunkCount());
+			"constructor (swept grid chunks shared: %zu of %zu; lasting state: %zu of %zu), %.1f kB of heap a copy\n",
+			serialized, cloned, shared, map->sweptGrid().chunkCount(), lasting.shared, lasting.chunks, heapKb);
 	}
 	if (map->lasting())  // the outputs' pose spreads (a chain per object, doc/map-plugin.md)
 	{

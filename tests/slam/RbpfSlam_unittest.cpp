@@ -312,6 +312,9 @@ TEST(RbpfSlam, ResampledCopiesAreClonesThatGoTheirOwnWay)
 		EXPECT_NE(a.get(), b.get());
 		EXPECT_GT(b->sweptGrid().chunkCount(), 0u);
 		EXPECT_EQ(b->sweptGrid().sharedChunks(), b->sweptGrid().chunkCount()) << i;
+		const auto sharing = b->lastingMap().state().sharing();  // and the lasting state's arrays and grids
+		EXPECT_GT(sharing.chunks, 0u);
+		EXPECT_EQ(sharing.shared, sharing.chunks) << i;
 		EXPECT_EQ(b->asString(), a->asString());
 	}
 	ASSERT_FALSE(twins.empty());
@@ -320,4 +323,9 @@ TEST(RbpfSlam, ResampledCopiesAreClonesThatGoTheirOwnWay)
 	b->insertObservation(*sweeps[k].obs, mrpt::poses::CPose3D(sweeps[k].robotPose));
 	EXPECT_EQ(a->asString(), before);
 	EXPECT_NE(b->asString(), before);
+	// The sweep wrote into some of the lasting state's chunks, not all (this early map is small
+	// and near the sweep: 15 of 38 stay shared): the copy's memory is what its sweep changed.
+	const auto sharing = b->lastingMap().state().sharing();
+	EXPECT_LT(sharing.shared, sharing.chunks);
+	EXPECT_GT(sharing.shared, 0u);
 }

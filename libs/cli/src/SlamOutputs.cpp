@@ -109,7 +109,8 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 	const auto maps = [](const slam::RbpfSlam::TMapTotals& t) {
 		return nlohmann::json{{"tables", t.tables}, {"legs", t.legs}, {"walls", t.walls},
 							  {"contacts_explained", t.explained}, {"contacts_unexplained", t.unexplained},
-							  {"swept_chunks", t.sweptChunks}, {"swept_chunks_shared", t.sharedChunks}};
+							  {"swept_chunks", t.sweptChunks}, {"swept_chunks_shared", t.sharedChunks},
+							  {"lasting_chunks", t.lastingChunks}, {"lasting_chunks_shared", t.lastingShared}};
 	};
 	j["filter_maps"] = {{"first_tenth", maps(run.filterMapsTenth)}, {"end", maps(run.filterMaps)}};
 	std::ofstream f(path);

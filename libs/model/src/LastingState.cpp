@@ -42,6 +42,15 @@ const LegEvidence& LastingState::evidence(Id l) const
 	return m_evidence[static_cast<size_t>(l)] ? *m_evidence[static_cast<size_t>(l)] : none;
 }
 
+LastingState::Sharing LastingState::sharing() const
+{
+	Sharing s;
+	const auto add = [&s](const auto& chunked) { s.shared += chunked.sharedChunks(), s.chunks += chunked.chunkCount(); };
+	add(m_legs.items()), add(m_contacts.items()), add(m_contactLeg), add(m_evidence), add(m_legContacts);
+	add(m_tableGrid), add(m_legGrid), add(m_contactGrid);
+	return s;
+}
+
 Id LastingState::addContact(const obs::Shapelet& s)
 {
 	return newContact(s, m_seq++);
@@ -50,8 +59,8 @@ Id LastingState::addContact(const obs::Shapelet& s)
 Id LastingState::newContact(const obs::Shapelet& s, uint64_t seq)
 {
 	const Id c = m_contacts.add(std::make_shared<const Reading>(Reading{s, seq}));
-	growTo(m_contactLeg, m_contacts.capacity(), NONE);
-	m_contactLeg[static_cast<size_t>(c)] = NONE;
+	m_contactLeg.growTo(static_cast<size_t>(m_contacts.capacity()), NONE);
+	m_contactLeg.edit(static_cast<size_t>(c)) = NONE;
 	m_contactGrid.insert(c, s.x, s.y);
 	return c;
 }
@@ -59,7 +68,7 @@ Id LastingState::newContact(const obs::Shapelet& s, uint64_t seq)
 void LastingState::dropContact(Id c)
 {
 	if (m_contactLeg[static_cast<size_t>(c)] == NONE) m_contactGrid.erase(c, shapelet(c).x, shapelet(c).y);
-	m_contacts[c].reset();  // the reading goes when no copy of the state holds it
+	m_contacts.edit(c).reset();  // the reading goes when no copy of the state holds it
 	m_contacts.remove(c);
 }
 
@@ -81,10 +90,10 @@ Id LastingState::addTable(const Table& t, double existence)
 Id LastingState::addLeg(const Leg& l, std::shared_ptr<const LegEvidence> e)
 {
 	const Id id = m_legs.add(l);
-	growTo(m_evidence, m_legs.capacity());
-	growTo(m_legContacts, m_legs.capacity());
-	m_evidence[id] = std::move(e);
-	m_legContacts[id].clear();
+	m_evidence.growTo(static_cast<size_t>(m_legs.capacity()));
+	m_legContacts.growTo(static_cast<size_t>(m_legs.capacity()));
+	m_evidence.edit(id) = std::move(e);
+	if (!m_legContacts[id].empty()) m_legContacts.edit(id).clear();
 	m_legGrid.insert(id, l.x, l.y);
 	m_maxLegRadius = std::max(m_maxLegRadius, std::hypot(l.wx, l.wy) / 2);
 	if (l.parent != NONE) m_tableLegs[l.parent].push_back(id);
@@ -100,16 +109,16 @@ size_t LastingState::mergeOverlappingLegs(const std::vector<Id>& legs, std::vect
 		Id a = start;
 		while (a != NONE && hasLeg(a))
 		{
-			const OrientedRect r = legRect(m_legs[a]);
+			const OrientedRect r = legRect(leg(a));
 			near.clear();
 			m_legGrid.forEachNear(r.cx, r.cy, std::hypot(r.hx, r.hy) + m_maxLegRadius, [&](Id o) {
-				if (o != a && r.overlaps(legRect(m_legs[o]))) near.push_back(o);
+				if (o != a && r.overlaps(legRect(leg(o)))) near.push_back(o);
 			});
 			if (near.empty()) break;
 			// By content, never by store id (a reloaded state numbers its legs differently).
 			const auto before = [&](Id p, Id q) {
-				return std::make_tuple(contactsExplained(q), m_legs[p].x, m_legs[p].y) <
-					   std::make_tuple(contactsExplained(p), m_legs[q].x, m_legs[q].y);
+				return std::make_tuple(contactsExplained(q), leg(p).x, leg(p).y) <
+					   std::make_tuple(contactsExplained(p), leg(q).x, leg(q).y);
 			};  // more contacts first, then by position
 			const Id b = *std::min_element(near.begin(), near.end(), before);
 			const bool keepA = before(a, b);
@@ -118,8 +127,8 @@ size_t LastingState::mergeOverlappingLegs(const std::vector<Id>& legs, std::vect
 			for (const Id c : contacts) setContactLeg(c, into);
 			LegEvidence merged = evidence(into);
 			merged.merge(evidence(from));
-			m_evidence[into] = share(merged);
-			const Id parent = m_legs[from].parent;
+			m_evidence.edit(into) = share(merged);
+			const Id parent = leg(from).parent;
 			removeLeg(from);
 			if (parent != NONE)
 			{
@@ -136,7 +145,11 @@ size_t LastingState::mergeOverlappingLegs(const std::vector<Id>& legs, std::vect
 
 void LastingState::removeTable(Id t)
 {
-	for (const Id l : m_tableLegs[t]) m_legs[l].parent = NONE, m_legs[l].corner = -1;
+	for (const Id l : m_tableLegs[t])
+	{
+		Leg& orphan = m_legs.edit(l);
+		orphan.parent = NONE, orphan.corner = -1;
+	}
 	m_tableLegs[t].clear();
 	m_tableGrid.erase(t, m_tables[t].x, m_tables[t].y);
 	m_tables.remove(t);
@@ -146,37 +159,37 @@ void LastingState::removeLeg(Id l)
 {
 	const std::vector<Id> contacts = m_legContacts[l];
 	for (const Id c : contacts) setContactLeg(c, NONE);
-	const Id parent = m_legs[l].parent;
+	const Id parent = leg(l).parent;
 	if (parent != NONE)
 	{
 		auto& v = m_tableLegs[parent];
 		v.erase(std::remove(v.begin(), v.end(), l), v.end());
 	}
-	m_evidence[l].reset();
-	m_legGrid.erase(l, m_legs[l].x, m_legs[l].y);
+	if (m_evidence[l]) m_evidence.edit(l).reset();
+	m_legGrid.erase(l, leg(l).x, leg(l).y);
 	m_legs.remove(l);
 }
 
 void LastingState::setContactLeg(Id c, Id l)
 {
-	Id& leg = m_contactLeg[static_cast<size_t>(c)];
+	if (m_contactLeg[static_cast<size_t>(c)] == l) return;
+	Id& leg = m_contactLeg.edit(static_cast<size_t>(c));
 	const obs::Shapelet& k = shapelet(c);
-	if (leg == l) return;
 	if (leg == NONE)
 		m_contactGrid.erase(c, k.x, k.y);
 	else
 	{
-		auto& v = m_legContacts[leg];
+		auto& v = m_legContacts.edit(leg);
 		v.erase(std::remove(v.begin(), v.end(), c), v.end());
 	}
 	leg = l;
 	if (l == NONE)
 		m_contactGrid.insert(c, k.x, k.y);
 	else
-		m_legContacts[l].push_back(c);
+		m_legContacts.edit(l).push_back(c);
 }
 
-void LastingState::extract(const std::vector<Id>& around, const Radii& radii, const ModelParams& model, Region& out)
+void LastingState::extract(const std::vector<Id>& around, const Radii& radii, const ModelParams& model, Region& out) const
 {
 	if (!(out.board.params() == model)) out.board = Blackboard(model);
 	if (++out.epoch == 0)  // wrapped: marks of 2^32 extractions ago would look fresh
@@ -357,20 +370,20 @@ void LastingState::replace(
 
 void LastingState::fold(Id l, size_t keep, const ModelParams& model)
 {
-	auto& contacts = m_legContacts[l];
-	if (contacts.size() <= keep) return;
+	if (m_legContacts[l].size() <= keep) return;
+	auto& contacts = m_legContacts.edit(l);
 	LegEvidence folded = evidence(l);  // this copy's own from now on
 	while (contacts.size() > keep)
 	{
 		const auto oldest = std::min_element(contacts.begin(), contacts.end(), [&](Id a, Id b) {
-			return m_contacts[a]->seq < m_contacts[b]->seq;
+			return seq(a) < seq(b);
 		});
 		const Id c = *oldest;
-		folded.add(shapelet(c), m_legs[l], model);
+		folded.add(shapelet(c), leg(l), model);
 		contacts.erase(oldest);
 		dropContact(c);
 	}
-	m_evidence[l] = share(folded);
+	m_evidence.edit(l) = share(folded);
 }
 
 size_t LastingState::forgetUnexplained(Id c, size_t keep, double radius)
@@ -381,7 +394,7 @@ size_t LastingState::forgetUnexplained(Id c, size_t keep, double radius)
 		if (dist2(shapelet(o).x, shapelet(o).y, s.x, s.y) <= radius * radius) near.push_back(o);
 	});
 	if (near.size() <= keep) return 0;
-	std::sort(near.begin(), near.end(), [&](Id a, Id b) { return m_contacts[a]->seq < m_contacts[b]->seq; });
+	std::sort(near.begin(), near.end(), [&](Id a, Id b) { return seq(a) < seq(b); });
 	const size_t forget = near.size() - keep;
 	for (size_t i = 0; i < forget; i++) dropContact(near[i]);
 	return forget;

@@ -10,14 +10,24 @@ SpatialGrid::SpatialGrid(double cellSize) : m_cellSize(cellSize)
 	if (!(cellSize > 0)) throw core::Error("SpatialGrid: the cell size must be positive");
 }
 
-void SpatialGrid::insert(Id id, double x, double y) { m_cells[Key{cell(x), cell(y)}].push_back(id); }
+void SpatialGrid::insert(Id id, double x, double y)
+{
+	const Key k{cell(x), cell(y)};
+	if (const uint32_t* c = find(k)) return m_cells.edit(*c).push_back(id);
+	if (!m_index)
+		m_index = std::make_shared<Index>();
+	else if (m_index.use_count() > 1)  // shared with a copy: copy on write
+		m_index = std::make_shared<Index>(*m_index);
+	m_index->emplace(k, static_cast<uint32_t>(m_cells.size()));
+	m_cells.push_back({id});
+}
 
 void SpatialGrid::erase(Id id, double x, double y)
 {
-	const auto it = m_cells.find(Key{cell(x), cell(y)});
-	if (it == m_cells.end()) return;
-	auto& v = it->second;
+	const uint32_t* c = find(Key{cell(x), cell(y)});
+	if (!c || std::find(m_cells[*c].begin(), m_cells[*c].end(), id) == m_cells[*c].end()) return;
+	auto& v = m_cells.edit(*c);
 	v.erase(std::remove(v.begin(), v.end(), id), v.end());
-	if (v.empty()) m_cells.erase(it);
 }
+
 }  // namespace whiskermap::model

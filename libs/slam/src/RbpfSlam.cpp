@@ -180,6 +180,8 @@ RbpfSlam::TMapTotals RbpfSlam::mapTotals() const
 		for (model::Id c = 0; c < s.contactIdBound(); c++)
 			if (s.hasContact(c)) (s.contact(c).leg == model::NONE ? t.unexplained : t.explained)++;
 		t.sweptChunks += map->sweptGrid().chunkCount(), t.sharedChunks += map->sweptGrid().sharedChunks();
+		const auto sharing = s.sharing();
+		t.lastingChunks += sharing.chunks, t.lastingShared += sharing.shared;
 	}
 	return t;
 }

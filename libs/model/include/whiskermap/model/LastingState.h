@@ -1,5 +1,6 @@
 #pragma once
 #include <whiskermap/model/Blackboard.h>
+#include <whiskermap/model/CowVector.h>
 #include <whiskermap/model/LegEvidence.h>
 #include <whiskermap/model/SlotVector.h>
 #include <whiskermap/model/SpatialGrid.h>
@@ -80,7 +81,7 @@ class LastingState
 	 *  with `model`. Board order depends on the content only (tables and legs by position,
 	 *  contacts by age), not on store ids: equal states, however built (a copy, a reload),
 	 *  give equal boards. */
-	void extract(const std::vector<Id>& around, const Radii& radii, const ModelParams& model, Region& out);
+	void extract(const std::vector<Id>& around, const Radii& radii, const ModelParams& model, Region& out) const;
 
 	/** Replaces the region's tables and legs by the live hypotheses of `solved` (a board
 	 *  grown from r.board: its first r.tables.size() table ids and r.legs.size() leg ids are
@@ -135,6 +136,7 @@ class LastingState
 	/** Contact c's reading: one object for every copy of the state that holds the contact. */
 	const obs::Shapelet& shapelet(Id c) const { return m_contacts[c]->shapelet; }
 	Contact contact(Id c) const { return {m_contacts[c]->shapelet, m_contactLeg[static_cast<size_t>(c)], m_contacts[c]->seq}; }
+	uint64_t seq(Id c) const { return m_contacts[c]->seq; }  ///< contact c's insertion number
 	const std::vector<Id>& legsOf(Id t) const { return m_tableLegs[t]; }
 	const std::vector<Id>& contactsOf(Id l) const { return m_legContacts[l]; }
 	size_t tableCount() const { return m_tables.count(); }
@@ -143,6 +145,13 @@ class LastingState
 	/** Contacts explained by leg l: explicit plus folded. */
 	uint64_t contactsExplained(Id l) const { return m_legContacts[l].size() + evidence(l).count(); }
 	uint64_t nextSeq() const { return m_seq; }
+	/** Chunks of the per-leg and per-contact arrays and of the grids that this state shares
+	 *  with its copies, and all of them (doc/map-plugin.md, "Copies"). */
+	struct Sharing
+	{
+		size_t shared = 0, chunks = 0;
+	};
+	Sharing sharing() const;
 
 	/** Rebuilds a state from its parts (deserialization): tables with their existence and
 	 *  reported poses (empty: the tables), legs (parent = index into `tables`) with evidence,
@@ -164,7 +173,9 @@ class LastingState
 
 	ModelParams m_sizes;  ///< table and leg sizes: search radii, cell sizes
 	SlotVector<Table> m_tables;
-	SlotVector<Leg> m_legs;
+	/** Per-leg and per-contact arrays are CowVectors: copies of the state (a particle filter's
+	 *  resampled maps) share the chunks neither has written since (doc/map-plugin.md, "Copies"). */
+	SlotVector<Leg, CowVector<Leg>> m_legs;
 	/** A contact's reading and insertion number: immutable, shared by the copies of the state
 	 *  that hold the contact (doc/map-plugin.md, "Copies"). */
 	struct Reading
@@ -172,16 +183,17 @@ class LastingState
 		obs::Shapelet shapelet;
 		uint64_t seq = 0;
 	};
-	SlotVector<std::shared_ptr<const Reading>> m_contacts;  ///< null in free slots
-	std::vector<Id> m_contactLeg;  ///< per contact, its explaining leg (NONE: none)
+	SlotVector<std::shared_ptr<const Reading>, CowVector<std::shared_ptr<const Reading>>> m_contacts;  ///< null in free slots
+	CowVector<Id> m_contactLeg;  ///< per contact, its explaining leg (NONE: none)
 	std::vector<double> m_existence;
 	std::vector<Table> m_reported;
 	std::vector<ChainSpread> m_chainSpread;
 	/** Per leg, its folded evidence: null when empty, else immutable and shared by the copies
 	 *  of the state (a particle filter's resampled maps) until one of them folds into it,
 	 *  which gives that copy its own (doc/map-plugin.md, "Copies"). */
-	std::vector<std::shared_ptr<const LegEvidence>> m_evidence;
-	std::vector<std::vector<Id>> m_tableLegs, m_legContacts;
+	CowVector<std::shared_ptr<const LegEvidence>> m_evidence;
+	std::vector<std::vector<Id>> m_tableLegs;
+	CowVector<std::vector<Id>> m_legContacts;
 	SpatialGrid m_tableGrid, m_legGrid, m_contactGrid;  ///< contacts: the unexplained ones
 	double m_maxLegRadius = 0;  ///< the largest half-diagonal of a leg ever added
 	uint64_t m_seq = 0;

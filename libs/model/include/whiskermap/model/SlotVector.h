@@ -2,13 +2,16 @@
 #include <whiskermap/model/Id.h>
 
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace whiskermap::model
 {
 /** Items addressed by stable ids (indices). Removing frees the slot for a later add (last
- *  freed, first reused), so memory stays flat and ids of live items never change. */
-template <class T>
+ *  freed, first reused), so memory stays flat and ids of live items never change. `Items`
+ *  holds them: a std::vector, or a CowVector whose copies share their chunks (then items are
+ *  written through edit() only). */
+template <class T, class Items = std::vector<T>>
 class SlotVector
 {
    public:
@@ -25,7 +28,7 @@ class SlotVector
 		{
 			id = m_free.back();
 			m_free.pop_back();
-			m_items[id] = v;
+			edit(id) = v;
 			m_alive[id] = 1;
 		}
 		++m_count;
@@ -48,11 +51,19 @@ class SlotVector
 	/** Ids are in [0, capacity()); test alive() before use. */
 	Id capacity() const { return static_cast<Id>(m_items.size()); }
 	size_t count() const { return m_count; }
-	T& operator[](Id id) { return m_items[id]; }
+	T& operator[](Id id) { return m_items[id]; }  ///< std::vector items only
 	const T& operator[](Id id) const { return m_items[id]; }
+	const Items& items() const { return m_items; }
+	T& edit(Id id)
+	{
+		if constexpr (std::is_same_v<Items, std::vector<T>>)
+			return m_items[id];
+		else
+			return m_items.edit(id);
+	}
 
    private:
-	std::vector<T> m_items;
+	Items m_items;
 	std::vector<uint8_t> m_alive;
 	std::vector<Id> m_free;
 	size_t m_count = 0;

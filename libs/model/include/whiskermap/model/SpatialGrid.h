@@ -1,26 +1,33 @@
 #pragma once
+#include <whiskermap/model/CowVector.h>
 #include <whiskermap/model/Id.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
 namespace whiskermap::model
 {
 /** Points (ids) on a uniform grid of square cells kept in a hash map that grows with the
- *  number of occupied cells: for maps of any size (the lasting map's store), where
- *  SpatialHash's fixed buckets suit small, often reset blackboards. Cell indices are 64-bit
- *  and clamped. */
+ *  number of cells ever occupied (a cell emptied stays, empty): for maps of any size (the
+ *  lasting map's store), where SpatialHash's fixed buckets suit small, often reset
+ *  blackboards. Cell indices are 64-bit and clamped. Copies share the hash map until one of
+ *  them opens a new cell, and the cells' contents by chunks (CowVector). */
 class SpatialGrid
 {
    public:
 	explicit SpatialGrid(double cellSize);
 
-	void clear() { m_cells.clear(); }
+	void clear() { m_index.reset(), m_cells.clear(); }
 	void insert(Id id, double x, double y);
 	void erase(Id id, double x, double y);
+
+	/** Chunks of cells (and the hash map, as one) this grid shares with a copy, and all of them. */
+	size_t sharedChunks() const { return m_cells.sharedChunks() + (m_index.use_count() > 1); }
+	size_t chunkCount() const { return m_cells.chunkCount() + (m_index != nullptr); }
 
 	/** Calls f(id) for every id in a cell touching the square of half-side `radius` around
 	 *  (x, y): a superset of the points within `radius`, each id once. */
@@ -30,8 +37,8 @@ class SpatialGrid
 		const int64_t x0 = cell(x - radius), x1 = cell(x + radius), y0 = cell(y - radius), y1 = cell(y + radius);
 		for (int64_t ix = x0; ix <= x1; ix++)
 			for (int64_t iy = y0; iy <= y1; iy++)
-				if (const auto it = m_cells.find(Key{ix, iy}); it != m_cells.end())
-					for (const Id id : it->second) f(id);
+				if (const uint32_t* c = find(Key{ix, iy}))
+					for (const Id id : m_cells[*c]) f(id);
 	}
 
    private:
@@ -55,7 +62,16 @@ class SpatialGrid
 		return static_cast<int64_t>(std::clamp(std::floor(v / m_cellSize), -LIM, LIM));
 	}
 
+	using Index = std::unordered_map<Key, uint32_t, KeyHash>;  ///< cell -> its slot in m_cells
+	const uint32_t* find(const Key& k) const
+	{
+		if (!m_index) return nullptr;
+		const auto it = m_index->find(k);
+		return it == m_index->end() ? nullptr : &it->second;
+	}
+
 	double m_cellSize;
-	std::unordered_map<Key, std::vector<Id>, KeyHash> m_cells;
+	std::shared_ptr<Index> m_index;  ///< null while empty; shared by copies until one opens a cell
+	CowVector<std::vector<Id>> m_cells;
 };
 }  // namespace whiskermap::model

@@ -58,6 +58,7 @@ class RbpfSlam
 		size_t tables = 0, legs = 0, walls = 0;
 		size_t explained = 0, unexplained = 0;  ///< explicit contacts with a leg, and without
 		size_t sweptChunks = 0, sharedChunks = 0;  ///< swept-grid chunks, and those shared with a copy
+		size_t lastingChunks = 0, lastingShared = 0;  ///< the lasting states' chunks (LastingState::sharing), and those shared
 	};
 
 	RbpfSlam(const TSlamParams& params, const mrpt::maps::TSetOfMetricMapInitializers& maps);
