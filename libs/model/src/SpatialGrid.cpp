@@ -25,9 +25,8 @@ void SpatialGrid::insert(Id id, double x, double y)
 void SpatialGrid::erase(Id id, double x, double y)
 {
 	const uint32_t* c = find(Key{cell(x), cell(y)});
-	if (!c || std::find(m_cells[*c].begin(), m_cells[*c].end(), id) == m_cells[*c].end()) return;
+	if (!c) return;
 	auto& v = m_cells.edit(*c);
 	v.erase(std::remove(v.begin(), v.end(), id), v.end());
 }
-
 }  // namespace whiskermap::model
