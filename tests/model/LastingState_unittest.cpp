@@ -90,3 +90,80 @@ TEST(LastingState, ATableWhoseOnlyLegIsMergedAwayGoes)
 	EXPECT_EQ(st.contactsOf(0).size(), 3u);
 	EXPECT_EQ(st.leg(0).parent, NONE);
 }
+
+namespace
+{
+/** 40 legs without table, 0.3 m apart along y = 0, each explaining one contact. */
+LastingState rowOfLegs(const ModelParams& p)
+{
+	std::vector<Leg> legs;
+	std::vector<LegEvidence> evidence;
+	std::vector<LastingState::Contact> contacts;
+	for (int i = 0; i < 40; i++)
+	{
+		legs.push_back(leg(0.3 * i, 0, NONE, -1));
+		evidence.emplace_back();
+		contacts.push_back(contact(0.3 * i + 0.025, 0, i, static_cast<uint64_t>(i)));
+	}
+	LastingState st(p);
+	st.restore({}, {}, {}, legs, evidence, contacts, 40, p);
+	return st;
+}
+
+LastingState::Radii radii(double r) { return {r, r, r}; }
+}  // namespace
+
+// A resampled copy of the map shares its chunks until one of the copies writes (doc/map-plugin.md,
+// "Copies"); a region written back as it was read writes nothing, so it unshares nothing.
+TEST(LastingState, ARegionWrittenBackUnchangedUnsharesNothing)
+{
+	const ModelParams p;
+	LastingState st = rowOfLegs(p);
+	const LastingState copy = st;
+	ASSERT_EQ(st.sharing().shared, st.sharing().chunks);
+	LastingState::Region r(p);
+	st.extract({20}, radii(1.0), p, r);
+	ASSERT_GE(r.legs.size(), 5u);
+	std::vector<Id> tables, legs;
+	st.replace(r, r.board, {}, tables, legs);
+	for (size_t i = 0; i < r.legs.size(); i++) EXPECT_EQ(legs[i], r.legs[i]);  // same store ids
+	EXPECT_EQ(st.sharing().shared, st.sharing().chunks);
+	EXPECT_EQ(copy.sharing().shared, copy.sharing().chunks);
+	EXPECT_EQ(st.contactsOf(legs[0]).size(), 1u);
+}
+
+// A leg the solution moves keeps its store id, is found at its new place and no longer at the
+// old one; a leg it removes leaves its contact unexplained; contacts it hands from one leg to
+// another are listed in insertion order.
+TEST(LastingState, ReplaceMovesRemovesAndRelinksLegsInPlace)
+{
+	const ModelParams p;
+	LastingState st = rowOfLegs(p);
+	LastingState::Region r(p);
+	st.extract({20}, radii(0.7), p, r);  // legs 18..22 (x = 5.4 .. 6.6), contacts 18..22
+	ASSERT_EQ(r.legs.size(), 5u);
+	ASSERT_EQ(r.contacts.size(), 5u);
+	Blackboard solved = r.board;
+	Leg moved = solved.leg(2);  // leg 20, at x = 6.0
+	moved.y = 0.8;  // into another cell of the leg grid
+	solved.setLeg(2, moved);
+	solved.setShapeletParent(1, 2);  // contact 19 (older) to leg 20
+	solved.removeLeg(1);  // leg 19
+	std::vector<Id> tables, legs;
+	st.replace(r, solved, {}, tables, legs);
+	EXPECT_EQ(legs[2], r.legs[2]);
+	EXPECT_EQ(legs[1], NONE);
+	EXPECT_FALSE(st.hasLeg(r.legs[1]));
+	EXPECT_DOUBLE_EQ(st.leg(legs[2]).y, 0.8);
+	EXPECT_EQ(st.contactsOf(legs[2]), (std::vector<Id>{r.contacts[1], r.contacts[2]}));
+	EXPECT_EQ(st.contact(r.contacts[1]).leg, legs[2]);
+	// The moved leg is found where it now stands, in a problem around a contact near it.
+	const Id near = st.addContact([] {
+		whiskermap::obs::Shapelet s;
+		s.x = 6.0, s.y = 0.9;
+		return s;
+	}());
+	LastingState::Region again(p);
+	st.extract({near}, radii(0.15), p, again);
+	EXPECT_EQ(again.legs, std::vector<Id>{legs[2]});
+}

@@ -100,6 +100,17 @@ Id LastingState::addLeg(const Leg& l, std::shared_ptr<const LegEvidence> e)
 	return id;
 }
 
+Id LastingState::setLeg(Id id, const Leg& l, const LegEvidence& e)
+{
+	const Leg& was = leg(id);
+	if (was.x != l.x || was.y != l.y) m_legGrid.erase(id, was.x, was.y), m_legGrid.insert(id, l.x, l.y);
+	if (!(was == l)) m_legs.edit(id) = l;
+	if (!(evidence(id) == e)) m_evidence.edit(id) = share(e);
+	m_maxLegRadius = std::max(m_maxLegRadius, std::hypot(l.wx, l.wy) / 2);
+	if (l.parent != NONE) m_tableLegs[l.parent].push_back(id);
+	return id;
+}
+
 size_t LastingState::mergeOverlappingLegs(const std::vector<Id>& legs, std::vector<Id>& kept, std::vector<Id>& touched)
 {
 	size_t merges = 0;
@@ -336,12 +347,12 @@ void LastingState::replace(
 		wallIndex[static_cast<size_t>(w)] = m_walls.size();
 		m_walls.push_back({solved.wall(w), solved.wallEvidence(w), wallExistence.at(static_cast<size_t>(w))});
 	}
-	// The region's legs' evidence, shared again by the legs that come back with it unchanged.
-	std::vector<std::shared_ptr<const LegEvidence>> before;
-	before.reserve(r.legs.size());
-	for (const Id l : r.legs) before.push_back(m_evidence[l]);
-	for (const Id l : r.legs) removeLeg(l);
-	for (const Id t : r.tables) removeTable(t);
+	// The region's legs the solution kept keep their store ids, so that a copy of the state
+	// shares their chunks while they come back unchanged; the others go. The region's
+	// tables hold only region legs (extract()'s closure): they go and come back.
+	for (size_t i = 0; i < r.legs.size(); i++)
+		if (!solved.hasLeg(static_cast<Id>(i))) removeLeg(r.legs[i]);
+	for (const Id t : r.tables) m_tableLegs[t].clear(), removeTable(t);
 	newTables.assign(static_cast<size_t>(solved.tableIdBound()), NONE);
 	newLegs.assign(static_cast<size_t>(solved.legIdBound()), NONE);
 	for (Id t = 0; t < solved.tableIdBound(); t++)
@@ -351,10 +362,8 @@ void LastingState::replace(
 		if (!solved.hasLeg(l)) continue;
 		Leg leg = solved.leg(l);
 		if (leg.parent != NONE) leg.parent = newTables[leg.parent];
-		const LegEvidence& e = solved.evidence(l);
-		const bool same = static_cast<size_t>(l) < before.size() && before[static_cast<size_t>(l)] &&
-						  *before[static_cast<size_t>(l)] == e;
-		newLegs[l] = addLeg(leg, same ? before[static_cast<size_t>(l)] : share(e));
+		newLegs[l] = static_cast<size_t>(l) < r.legs.size() ? setLeg(r.legs[static_cast<size_t>(l)], leg, solved.evidence(l))
+															 : addLeg(leg, share(solved.evidence(l)));
 	}
 	for (size_t i = 0; i < r.contacts.size(); i++)
 	{
@@ -365,6 +374,14 @@ void LastingState::replace(
 		StoredWall& sw = m_walls[wallIndex[static_cast<size_t>(w)]];
 		sw.evidence.add(shapelet(r.contacts[i]), sw.wall, solved.wallFrame(w), model);
 		dropContact(r.contacts[i]);
+	}
+	// A kept leg's contacts in insertion order, as a leg built from scratch lists them.
+	const auto older = [this](Id a, Id b) { return seq(a) < seq(b); };
+	for (size_t i = 0; i < r.legs.size(); i++)
+	{
+		const Id l = newLegs[i];
+		if (l != NONE && !std::is_sorted(m_legContacts[l].begin(), m_legContacts[l].end(), older))
+			std::sort(m_legContacts.edit(l).begin(), m_legContacts.edit(l).end(), older);
 	}
 }
 

@@ -165,6 +165,9 @@ class LastingState
    private:
 	Id addTable(const Table& t, double existence);
 	Id addLeg(const Leg& l, std::shared_ptr<const LegEvidence> e);  ///< links to l.parent (a store id)
+	/** Leg `id` becomes `l` with evidence `e`, writing only what changed; links to l.parent
+	 *  (a store id; the old parent's list is the caller's). Returns `id`. */
+	Id setLeg(Id id, const Leg& l, const LegEvidence& e);
 	void removeTable(Id t);  ///< after its legs are gone or relinked
 	void removeLeg(Id l);  ///< its contacts become unexplained
 	void setContactLeg(Id c, Id l);

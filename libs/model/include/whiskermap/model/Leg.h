@@ -15,5 +15,10 @@ struct Leg
 	double texture = 0;  ///< in [0, 1]
 	Id parent = NONE;  ///< parent table id, or NONE (null cause, eq. 8)
 	int corner = -1;  ///< the parent's corner it stands at (argmin of eq. 6), -1 without parent
+	bool operator==(const Leg& o) const
+	{
+		return x == o.x && y == o.y && theta == o.theta && wx == o.wx && wy == o.wy && texture == o.texture &&
+			   parent == o.parent && corner == o.corner;
+	}
 };
 }  // namespace whiskermap::model
