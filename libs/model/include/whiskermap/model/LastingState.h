@@ -86,7 +86,9 @@ class LastingState
 	/** Replaces the region's tables and legs by the live hypotheses of `solved` (a board
 	 *  grown from r.board: its first r.tables.size() table ids and r.legs.size() leg ids are
 	 *  the region's, later ids new), relinks the region's contacts, and stores
-	 *  `existence[t]` for each live table t of `solved`. Returns the store ids of the new
+	 *  `existence[t]` for each live table t of `solved`. A region leg that `solved` keeps
+	 *  keeps its store id and is written only where it changed (copies of the state go on
+	 *  sharing its chunks); the region's tables are removed and added again. Returns the store ids of the
 	 *  legs and tables in `newLegs` / `newTables` (board id -> store id, NONE if dead).
 	 *  The region's walls are replaced by the live walls of `solved` with `wallExistence[w]`;
 	 *  the contacts a wall explains are folded into its evidence at once (scored with `model`)
