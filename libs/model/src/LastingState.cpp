@@ -380,8 +380,9 @@ void LastingState::replace(
 	for (size_t i = 0; i < r.legs.size(); i++)
 	{
 		const Id l = newLegs[i];
-		if (l != NONE && !std::is_sorted(m_legContacts[l].begin(), m_legContacts[l].end(), older))
-			std::sort(m_legContacts.edit(l).begin(), m_legContacts.edit(l).end(), older);
+		if (l == NONE || std::is_sorted(m_legContacts[l].begin(), m_legContacts[l].end(), older)) continue;
+		auto& contacts = m_legContacts.edit(l);
+		std::sort(contacts.begin(), contacts.end(), older);
 	}
 }
 
