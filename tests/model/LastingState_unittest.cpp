@@ -97,16 +97,14 @@ namespace
 LastingState rowOfLegs(const ModelParams& p)
 {
 	std::vector<Leg> legs;
-	std::vector<LegEvidence> evidence;
 	std::vector<LastingState::Contact> contacts;
 	for (int i = 0; i < 40; i++)
 	{
 		legs.push_back(leg(0.3 * i, 0, NONE, -1));
-		evidence.emplace_back();
 		contacts.push_back(contact(0.3 * i + 0.025, 0, i, static_cast<uint64_t>(i)));
 	}
 	LastingState st(p);
-	st.restore({}, {}, {}, legs, evidence, contacts, 40, p);
+	st.restore({}, {}, {}, legs, std::vector<LegEvidence>(legs.size()), contacts, 40, p);
 	return st;
 }
 

@@ -103,7 +103,7 @@ Id LastingState::addLeg(const Leg& l, std::shared_ptr<const LegEvidence> e)
 Id LastingState::setLeg(Id id, const Leg& l, const LegEvidence& e)
 {
 	const Leg& was = leg(id);
-	if (was.x != l.x || was.y != l.y) m_legGrid.erase(id, was.x, was.y), m_legGrid.insert(id, l.x, l.y);
+	m_legGrid.move(id, was.x, was.y, l.x, l.y);
 	if (!(was == l)) m_legs.edit(id) = l;
 	if (!(evidence(id) == e)) m_evidence.edit(id) = share(e);
 	m_maxLegRadius = std::max(m_maxLegRadius, std::hypot(l.wx, l.wy) / 2);

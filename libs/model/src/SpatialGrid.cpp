@@ -29,4 +29,11 @@ void SpatialGrid::erase(Id id, double x, double y)
 	auto& v = m_cells.edit(*c);
 	v.erase(std::remove(v.begin(), v.end(), id), v.end());
 }
+
+void SpatialGrid::move(Id id, double x0, double y0, double x1, double y1)
+{
+	if (cell(x0) == cell(x1) && cell(y0) == cell(y1)) return;
+	erase(id, x0, y0);
+	insert(id, x1, y1);
+}
 }  // namespace whiskermap::model

@@ -24,6 +24,8 @@ class SpatialGrid
 	void clear() { m_index.reset(), m_cells.clear(); }
 	void insert(Id id, double x, double y);
 	void erase(Id id, double x, double y);
+	/** `id` moves from (x0, y0) to (x1, y1): written only when it changes cell. */
+	void move(Id id, double x0, double y0, double x1, double y1);
 
 	/** Chunks of cells (and the hash map, as one) this grid shares with a copy, and all of them. */
 	size_t sharedChunks() const { return m_cells.sharedChunks() + (m_index.use_count() > 1); }
