@@ -36,7 +36,8 @@ rss, heap = s["filter_peak_rss_mb"], s["filter_heap_mb"]
 ate = lambda k: s[k]["trajectory"]["ate_rmse_m"] if k in s else float("nan")
 def maps(when):  # summed over the particles
     m = s["filter_maps"][when]
-    return (f"{m['tables']} tables, {m['legs']} legs, "
+    return (f"{m['tables']} tables, {m['legs']} legs ({m.get('legs_without_table', '?')} without a table, "
+            f"{m.get('legs_beside', '?')} beside another), "
             f"{m['contacts_explained'] + m['contacts_unexplained']} contacts ({m['contacts_unexplained']} unexplained), "
             f"{m.get('lasting_chunks_shared', 0)} of {m.get('lasting_chunks', 0)} chunks shared")
 print(f"explore path {path_seed}, {odo} odometry, {s['particles_config']} particles asked ({s['particles']} ran), seed {seed}, {s['sweeps']} sweeps: filter peak RSS "

@@ -91,6 +91,21 @@ TEST(LastingState, ATableWhoseOnlyLegIsMergedAwayGoes)
 	EXPECT_EQ(st.leg(0).parent, NONE);
 }
 
+// A leg mapped again a few centimetres beside the first (doc/slam.md, "Legs mapped again beside
+// the first") is counted, from either side, also across grid cells; legs further apart are not.
+TEST(LastingState, LegsBesideAreThoseWithAnotherLegWithinTheDistance)
+{
+	const ModelParams p;
+	LastingState st(p);
+	st.restore(
+		{}, {}, {}, {leg(1, 1, NONE, -1), leg(1.06, 1.03, NONE, -1), leg(-0.04, 2, NONE, -1), leg(0.04, 2, NONE, -1), leg(3, 3, NONE, -1)},
+		std::vector<LegEvidence>(5), {}, 0, p);
+	EXPECT_EQ(st.legsBeside(0.1), 4u);
+	EXPECT_EQ(st.legsBeside(0.07), 2u);  // 0.067 apart: beside; 0.08 apart: not
+	EXPECT_EQ(st.legsBeside(0.05), 0u);
+	EXPECT_EQ(st.legsBeside(3), 5u);
+}
+
 namespace
 {
 /** 40 legs without table, 0.3 m apart along y = 0, each explaining one contact. */

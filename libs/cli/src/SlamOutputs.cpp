@@ -107,7 +107,8 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 	const auto known = [](double mb) { return std::isnan(mb) ? nlohmann::json() : nlohmann::json(mb); };  // null: not measured
 	j["filter_heap_mb"] = {{"first_tenth", known(run.filterHeapTenthMb)}, {"end", known(run.filterHeapMb)}};
 	const auto maps = [](const slam::RbpfSlam::TMapTotals& t) {
-		return nlohmann::json{{"tables", t.tables}, {"legs", t.legs}, {"walls", t.walls},
+		return nlohmann::json{{"tables", t.tables}, {"legs", t.legs}, {"legs_without_table", t.legsWithoutTable},
+							  {"legs_beside", t.legsBeside}, {"walls", t.walls},
 							  {"contacts_explained", t.explained}, {"contacts_unexplained", t.unexplained},
 							  {"swept_chunks", t.sweptChunks}, {"swept_chunks_shared", t.sharedChunks},
 							  {"lasting_chunks", t.lastingChunks}, {"lasting_chunks_shared", t.lastingShared}};

@@ -42,6 +42,22 @@ const LegEvidence& LastingState::evidence(Id l) const
 	return m_evidence[static_cast<size_t>(l)] ? *m_evidence[static_cast<size_t>(l)] : none;
 }
 
+size_t LastingState::legsBeside(double distance) const
+{
+	size_t n = 0;
+	for (Id a = 0; a < legIdBound(); a++)
+	{
+		if (!hasLeg(a)) continue;
+		const Leg& l = leg(a);
+		bool beside = false;
+		m_legGrid.forEachNear(l.x, l.y, distance, [&](Id b) {
+			beside = beside || (b != a && std::hypot(leg(b).x - l.x, leg(b).y - l.y) <= distance);
+		});
+		n += beside;
+	}
+	return n;
+}
+
 LastingState::Sharing LastingState::sharing() const
 {
 	Sharing s;

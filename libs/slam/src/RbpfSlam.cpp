@@ -177,6 +177,8 @@ RbpfSlam::TMapTotals RbpfSlam::mapTotals() const
 		if (!map) continue;
 		const auto& s = map->lastingMap().state();
 		t.tables += s.tableCount(), t.legs += s.legCount(), t.walls += s.walls().size();
+		for (model::Id l = 0; l < s.legIdBound(); l++) t.legsWithoutTable += s.hasLeg(l) && s.leg(l).parent == model::NONE;
+		t.legsBeside += s.legsBeside(BESIDE);
 		for (model::Id c = 0; c < s.contactIdBound(); c++)
 			if (s.hasContact(c)) (s.contact(c).leg == model::NONE ? t.unexplained : t.explained)++;
 		t.sweptChunks += map->sweptGrid().chunkCount(), t.sharedChunks += map->sweptGrid().sharedChunks();

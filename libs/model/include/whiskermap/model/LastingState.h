@@ -146,6 +146,10 @@ class LastingState
 	size_t contactCount() const { return m_contacts.count(); }
 	/** Contacts explained by leg l: explicit plus folded. */
 	uint64_t contactsExplained(Id l) const { return m_legContacts[l].size() + evidence(l).count(); }
+	/** Legs with another leg's centre within `distance` of their own: a solid mapped twice, a
+	 *  few centimetres off (doc/slam.md, "Legs mapped again beside the first"), or two objects
+	 *  standing that close. */
+	size_t legsBeside(double distance) const;
 	uint64_t nextSeq() const { return m_seq; }
 	/** Chunks of the per-leg and per-contact arrays and of the grids that this state shares
 	 *  with its copies, and all of them (doc/map-plugin.md, "Copies"). */

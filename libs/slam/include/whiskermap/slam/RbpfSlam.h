@@ -52,10 +52,15 @@ class RbpfSlam
 		bool resampled = false;  ///< ESS below resample_ess: the particles are resampled before the next sweep
 	};
 
+	/** Metres: two legs whose centres are this close are counted as beside each other in
+	 *  TMapTotals (two leg widths of the shipped model; a table's own legs stand 0.6 m apart or more). */
+	static constexpr double BESIDE = 0.1;
 	/** What the particles' maps hold, summed over the particles (what their memory grows with). */
 	struct TMapTotals
 	{
 		size_t tables = 0, legs = 0, walls = 0;
+		size_t legsWithoutTable = 0;  ///< legs no table stands on
+		size_t legsBeside = 0;  ///< legs with another leg's centre within BESIDE (LastingState::legsBeside)
 		size_t explained = 0, unexplained = 0;  ///< explicit contacts with a leg, and without
 		size_t sweptChunks = 0, sharedChunks = 0;  ///< swept-grid chunks, and those shared with a copy
 		size_t lastingChunks = 0, lastingShared = 0;  ///< the lasting states' chunks (LastingState::sharing), and those shared
