@@ -29,8 +29,8 @@ import json, sys
 s = json.load(open(sys.argv[1]))  # valid JSON, with every key the doc lists
 assert s["particles"] == s["particles_config"] == int(sys.argv[2]) and s["sweeps"] == int(sys.argv[3]), "particles/sweeps"
 fm = s["filter_maps"]  # summed over the particles: 240 sweeps map a table in every particle's map
-keys = {"tables", "legs", "legs_without_table", "legs_beside", "walls", "contacts_explained", "contacts_unexplained", "swept_chunks", "swept_chunks_shared",
-        "lasting_chunks", "lasting_chunks_shared"}
+keys = {"tables", "legs", "legs_without_table", "legs_beside", "walls", "contacts_explained", "contacts_unexplained",
+        "swept_chunks", "swept_chunks_shared", "lasting_chunks", "lasting_chunks_shared"}
 assert set(fm) == {"first_tenth", "end"} and all(set(fm[k]) == keys for k in fm), "filter_maps keys"
 assert all(0 < fm[k]["lasting_chunks_shared"] < fm[k]["lasting_chunks"] for k in fm), "filter_maps lasting chunks"
 assert fm["end"]["legs"] >= fm["end"]["tables"] >= s["particles"] and fm["end"]["contacts_explained"] >= fm["end"]["legs"], "filter_maps"
