@@ -37,6 +37,24 @@ core::Error SlamSmoothing::shorter(const std::string& rawlog, size_t found, size
 					   " (the file changed during the run?)");
 }
 
+std::vector<world::Obstacle> SlamSmoothing::solidsAt(
+	const std::vector<Eigen::Vector3d>& path, const mrpt::maps::TSetOfMetricMapInitializers& maps) const
+{
+	mrpt::maps::CMultiMetricMap multimap(maps);
+	auto map = multimap.mapByClass<maps::CHierarchicalObjectMap>();
+	if (!map) throw core::Error("whisker-slam: the map config holds no hierarchicalObjectMap");
+	MapRunner runner(multimap, *map, 1, [](size_t, const obs::RawlogReader::Sweep&, double) {});
+	size_t k = 0;
+	obs::RawlogReader::forEach(m_rawlog, [&](const obs::RawlogReader::Sweep& sw) {
+		if (k >= path.size()) return;
+		const auto& x = path[k++];
+		runner.add({mrpt::poses::CPose2D(x[0], x[1], x[2]), sw.obs});
+	});
+	runner.flush();
+	map->annealPending();
+	return map->mappedSolids();
+}
+
 smooth::PathSmoother::TResult SlamSmoothing::run(
 	std::vector<Eigen::Vector3d> path, std::vector<world::Obstacle> solids, const smooth::TSmoothParams& params,
 	const mrpt::maps::TSetOfMetricMapInitializers& maps) const
@@ -46,19 +64,8 @@ smooth::PathSmoother::TResult SlamSmoothing::run(
 	auto result = smooth::PathSmoother::run(in, params);
 	for (unsigned pass = 1; pass < params.passes && result.rounds > 0; pass++)  // no rounds: nothing estimated (exact odometry), nothing to redo
 	{
-		mrpt::maps::CMultiMetricMap multimap(maps);
-		auto map = multimap.mapByClass<maps::CHierarchicalObjectMap>();
-		if (!map) throw core::Error("whisker-slam: the map config holds no hierarchicalObjectMap");
-		MapRunner runner(multimap, *map, 1, [](size_t, const obs::RawlogReader::Sweep&, double) {});
-		size_t k = 0;
-		obs::RawlogReader::forEach(m_rawlog, [&](const obs::RawlogReader::Sweep& sw) {
-			if (k >= result.path.size()) return;
-			const auto& x = result.path[k++];
-			runner.add({mrpt::poses::CPose2D(x[0], x[1], x[2]), sw.obs});
-		});
-		runner.flush();
-		map->annealPending();
-		in.path = result.path, in.solids = map->mappedSolids();
+		in.solids = solidsAt(result.path, maps);
+		in.path = result.path;
 		const auto before = result;
 		result = smooth::PathSmoother::run(in, params);
 		result.costBefore = before.costBefore;  // at the particle's path

@@ -43,6 +43,11 @@ class SlamSmoothing
 	 *  holds fewer (changed since the filter read it) or is damaged. */
 	smooth::PathSmoother::TInput read(size_t sweeps) const;
 
+	/** The solids of a map of `maps` built by inserting the rawlog's first path.size() sweeps
+	 *  at `path`'s poses. */
+	std::vector<world::Obstacle> solidsAt(
+		const std::vector<Eigen::Vector3d>& path, const mrpt::maps::TSetOfMetricMapInitializers& maps) const;
+
 	std::string m_rawlog;
 	slam::TSlamParams m_slam;
 };
