@@ -499,9 +499,34 @@ TEST(CHierarchicalObjectMap, SerializationKeepsManhattanWalls)
 		for (const double corrupt : {std::nan(""), 2e3, -1.6})
 		{
 			std::vector<uint8_t> bad = bytes;
-			std::memcpy(bad.data() + bad.size() - 1 - RECORD_SWEPT_BYTES - at, &corrupt, sizeof corrupt);
+			std::memcpy(bad.data() + bad.size() - 1 - AFTER_MANHATTAN - at, &corrupt, sizeof corrupt);
 			EXPECT_ANY_THROW(fromBytes(bad)) << corrupt << " at " << at;
 		}
+}
+
+// Version 16 stores insertOpts leg_merge_gap; a version 15 stream (the same bytes without it)
+// loads with 0 (only overlapping legs merged), and a gap outside [0, 1] m is refused.
+TEST(CHierarchicalObjectMap, SerializationKeepsTheLegMergeGap)
+{
+	CHierarchicalObjectMap a;
+	a.insertionOptions.lasting.leg_merge_gap = 0.02;
+	const auto b = reloaded(a);
+	ASSERT_TRUE(b);
+	EXPECT_EQ(b->insertionOptions.lasting.leg_merge_gap, 0.02);
+	const std::vector<uint8_t> bytes = bytesOf(a);
+	ASSERT_EQ(bytes[VERSION_BYTE], STREAM_VERSION);
+	std::vector<uint8_t> old = bytes;
+	old[VERSION_BYTE] = 15;
+	old.erase(old.end() - 1 - LEG_MERGE_GAP_BYTES, old.end() - 1);
+	const auto c = fromBytes(old);
+	ASSERT_TRUE(c);
+	EXPECT_EQ(c->insertionOptions.lasting.leg_merge_gap, 0);
+	for (const double corrupt : {std::nan(""), 2.0, -0.01})
+	{
+		std::vector<uint8_t> bad = bytes;
+		std::memcpy(bad.data() + bad.size() - 1 - LEG_MERGE_GAP_BYTES, &corrupt, sizeof corrupt);
+		EXPECT_ANY_THROW(fromBytes(bad)) << corrupt;
+	}
 }
 
 // MRPT reads a field the stream's end cuts short without throwing: every cut of a map's stream

@@ -4,12 +4,16 @@
 namespace whiskermap::maps::test
 {
 /** The version CHierarchicalObjectMap writes. */
-constexpr int STREAM_VERSION = 15;
+constexpr int STREAM_VERSION = 16;
 /** Version 14's tail: manhattan_walls (a bool), wall_axis, wall_extension and
  *  wall_extension_min_length (doubles). */
 constexpr long MANHATTAN_BYTES = 1 + 8 + 8 + 8;
 /** Version 15's tail: record_swept (a bool). */
 constexpr long RECORD_SWEPT_BYTES = 1;
+/** Version 16's tail: leg_merge_gap (a double). */
+constexpr long LEG_MERGE_GAP_BYTES = 8;
+/** What the versions after 14 write after version 14's tail, before MRPT's end flag. */
+constexpr long AFTER_MANHATTAN = RECORD_SWEPT_BYTES + LEG_MERGE_GAP_BYTES;
 /** What the versions after 13 write after version 13's chain spreads, before MRPT's end flag. */
-constexpr long AFTER_CHAIN_SPREADS = MANHATTAN_BYTES + RECORD_SWEPT_BYTES;
+constexpr long AFTER_CHAIN_SPREADS = MANHATTAN_BYTES + AFTER_MANHATTAN;
 }  // namespace whiskermap::maps::test

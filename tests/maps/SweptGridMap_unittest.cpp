@@ -176,7 +176,7 @@ TEST(SweptGridMap, UnrecordedItStaysEmptyAndTheMapIsTheSame)
 	const std::string name = "whiskermap::maps::CHierarchicalObjectMap";
 	ASSERT_EQ(bytes[1 + name.size()], STREAM_VERSION);
 	bytes[1 + name.size()] = 14;
-	bytes.erase(bytes.end() - 1 - RECORD_SWEPT_BYTES, bytes.end() - 1);
+	bytes.erase(bytes.end() - 1 - AFTER_MANHATTAN, bytes.end() - 1);
 	const auto old = read(bytes);
 	ASSERT_TRUE(old);
 	EXPECT_TRUE(old->insertionOptions.record_swept);

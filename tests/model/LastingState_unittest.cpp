@@ -91,6 +91,38 @@ TEST(LastingState, ATableWhoseOnlyLegIsMergedAwayGoes)
 	EXPECT_EQ(st.leg(0).parent, NONE);
 }
 
+// With a gap (insertOpts leg_merge_gap: whisker-slam's particle maps), legs that come within
+// it of each other are merged as overlapping ones are; legs further apart are left alone.
+TEST(LastingState, LegsWithinTheGapAreMergedThoseBeyondItAreNot)
+{
+	const ModelParams p;
+	Table t;
+	t.leg_width = 0.05, t.texture = 0.7;
+	// Legs 5 cm wide: 0 and 1 are 1.5 cm apart edge to edge, 2 is 4 cm beyond 1.
+	const auto state = [&] {
+		LastingState st(p);
+		st.restore(
+			{t}, {1.0}, {}, {leg(1, 1, NONE, -1), leg(1.065, 1, NONE, -1), leg(1.155, 1, 0, 0)}, {{}, {}, {}},
+			{contact(0.97, 1, 0, 1), contact(0.975, 1.01, 0, 2), contact(1.09, 1, 1, 3), contact(1.18, 1, 2, 4)}, 5, p);
+		return st;
+	};
+	for (const double gap : {0.0, 0.01})
+	{
+		LastingState st = state();
+		std::vector<Id> kept, touched;
+		EXPECT_EQ(st.mergeOverlappingLegs({0, 1, 2}, kept, touched, gap), 0u) << gap;
+		EXPECT_EQ(st.legCount(), 3u) << gap;
+	}
+	LastingState st = state();
+	std::vector<Id> kept, touched;
+	EXPECT_EQ(st.mergeOverlappingLegs({1}, kept, touched, 0.02), 1u);
+	EXPECT_TRUE(st.hasLeg(0));  // it explains more
+	EXPECT_FALSE(st.hasLeg(1));
+	EXPECT_EQ(st.contactsOf(0).size(), 3u);
+	EXPECT_TRUE(st.hasLeg(2));  // 4 cm from the gone leg, 10.5 cm from the kept one
+	EXPECT_TRUE(st.hasTable(0));
+}
+
 // A leg mapped again a few centimetres beside the first (doc/slam.md, "Legs mapped again beside
 // the first") is counted, from either side, also across grid cells; legs further apart are not.
 TEST(LastingState, LegsBesideAreThoseWithAnotherLegWithinTheDistance)

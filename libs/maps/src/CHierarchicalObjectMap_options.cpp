@@ -47,6 +47,7 @@ void CHierarchicalObjectMap::TInsertionOptions::loadFromConfigFile(
 		lasting.contacts_per_leg = static_cast<uint32_t>(sec.integer("contacts_per_leg", lasting.contacts_per_leg, 0, 1000));
 		lasting.unexplained_per_spot =
 			static_cast<uint32_t>(sec.integer("unexplained_per_spot", lasting.unexplained_per_spot, 0, 1000));
+		lasting.leg_merge_gap = sec.number("leg_merge_gap", lasting.leg_merge_gap, 0, 1);
 		lasting.rigid_pose = sec.boolean("rigid_pose", lasting.rigid_pose);
 		lasting.noisy_revisions = static_cast<uint32_t>(sec.integer("noisy_revisions", lasting.noisy_revisions, 0, 1000));
 		lasting.batch_sweeps = static_cast<uint32_t>(sec.integer("batch_sweeps", lasting.batch_sweeps, 1, 1000));
@@ -74,6 +75,7 @@ void CHierarchicalObjectMap::TInsertionOptions::dumpToTextStream(std::ostream& o
 {
 	out << "mode=" << modeName(mode) << "\nvisit_radius=" << lasting.visit_radius
 		<< "\ncontacts_per_leg=" << lasting.contacts_per_leg << "\nnoisy_revisions=" << lasting.noisy_revisions << "\nbatch_sweeps=" << lasting.batch_sweeps << "\nunexplained_per_spot=" << lasting.unexplained_per_spot
+		<< "\nleg_merge_gap=" << lasting.leg_merge_gap
 		<< "\nrigid_pose=" << lasting.rigid_pose
 		<< "\nlocal_beta_start=" << lasting.schedule.beta_start << "\nlocal_temperatures=" << lasting.schedule.temperatures
 		<< "\nlocal_sweeps_per_temperature=" << lasting.schedule.sweeps_per_temperature

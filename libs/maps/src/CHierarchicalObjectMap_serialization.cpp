@@ -9,7 +9,7 @@
 // before 11 with every class's legs nominal; versions before 12 with every sweep annealed at
 // once; versions before 13 without the posterior chain's pose spreads (none); versions before
 // 14 without Manhattan walls and with walls as mapped in the likelihood; versions before 15
-// recording every sweep in the swept grid.
+// recording every sweep in the swept grid; versions before 16 merging only overlapping legs.
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/model/ObjectCatalogue.h>
@@ -318,7 +318,7 @@ void readChainSpreads(CArchive& in, model::LastingState& s)
 }
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 15; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 16; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -388,6 +388,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	out << m.manhattan_walls << m.wall_axis << likelihoodOptions.wall_extension << likelihoodOptions.wall_extension_min_length;
 	// Version 15: whether sweeps are recorded in the swept grid.
 	out << insertionOptions.record_swept;
+	// Version 16: legs merged within a gap.
+	out << l.leg_merge_gap;
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -410,6 +412,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 13:
 		case 14:
 		case 15:
+		case 16:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -529,6 +532,13 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 			}
 			insertionOptions.record_swept = true;  // versions before 15 recorded every sweep
 			if (version >= 15) in >> insertionOptions.record_swept;
+			insertionOptions.lasting.leg_merge_gap = 0;  // versions before 16 merged only overlapping legs
+			if (version >= 16)
+			{
+				in >> insertionOptions.lasting.leg_merge_gap;
+				if (!(insertionOptions.lasting.leg_merge_gap >= 0 && insertionOptions.lasting.leg_merge_gap <= 1))
+					THROW_EXCEPTION("CHierarchicalObjectMap: corrupt options (leg_merge_gap not a number in [0, 1] m)");
+			}
 			if (!(m.sigma_corner > 0) || !std::isfinite(m.sigma_corner))
 				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt model (sigma_corner not a positive number)");
 			m_consolidator.setObjects(std::move(objs));

@@ -242,7 +242,7 @@ LastingMap::TStats LastingMap::solve(
 	// No two legs in one place: the search may pass through overlaps (eq. 16 is soft), the
 	// stored map may not (doc/map-plugin.md). The merged legs' tables are refitted.
 	ws.merged.clear();
-	if (m_state.mergeOverlappingLegs(ws.newLegs, ws.merged, ws.refit) > 0)
+	if (m_state.mergeOverlappingLegs(ws.newLegs, ws.merged, ws.refit, m_options.leg_merge_gap) > 0)
 	{
 		for (model::Id& l : ws.newLegs)
 			if (l != model::NONE && !m_state.hasLeg(l)) l = model::NONE;

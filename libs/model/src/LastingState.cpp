@@ -127,7 +127,8 @@ Id LastingState::setLeg(Id id, const Leg& l, const LegEvidence& e)
 	return id;
 }
 
-size_t LastingState::mergeOverlappingLegs(const std::vector<Id>& legs, std::vector<Id>& kept, std::vector<Id>& touched)
+size_t LastingState::mergeOverlappingLegs(
+	const std::vector<Id>& legs, std::vector<Id>& kept, std::vector<Id>& touched, double gap)
 {
 	size_t merges = 0;
 	std::vector<Id> near;
@@ -136,7 +137,8 @@ size_t LastingState::mergeOverlappingLegs(const std::vector<Id>& legs, std::vect
 		Id a = start;
 		while (a != NONE && hasLeg(a))
 		{
-			const OrientedRect r = legRect(leg(a));
+			OrientedRect r = legRect(leg(a));
+			r.hx += gap, r.hy += gap;
 			near.clear();
 			m_legGrid.forEachNear(r.cx, r.cy, std::hypot(r.hx, r.hy) + m_maxLegRadius, [&](Id o) {
 				if (o != a && r.overlaps(legRect(leg(o)))) near.push_back(o);

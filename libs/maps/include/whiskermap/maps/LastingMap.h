@@ -33,6 +33,11 @@ class LastingMap
 		/** Unexplained contacts kept within one leg width of each other; older ones are
 		 *  forgotten (they never found a cause). */
 		uint32_t unexplained_per_spot = 4;
+		/** Legs merged after an insertion: those that overlap, and those whose rectangles
+		 *  come within this distance (m) of each other (a leg mapped again beside itself by a
+		 *  drifting pose; whisker-slam's particle maps, doc/slam.md "Legs mapped again beside
+		 *  the first"). 0: only legs that overlap (eq. 16 made hard). */
+		double leg_merge_gap = 0;
 		/** Revisions after each insertion whose readings are looser than the legs' placement
 		 *  (model sigma_r > sigma_corner: the very noisy sensor, doc/model.md "Two noises"):
 		 *  each re-anneals, with the sampler's full schedule, the local problem around the

@@ -106,12 +106,14 @@ class LastingState
 	void fold(Id l, size_t keep, const ModelParams& model);
 	/** Eq. 16 made hard in the stored map (doc/map-plugin.md, "No two legs in one place"): each
 	 *  live leg of `legs` (store ids; NONE skipped) whose rectangle overlaps another stored
-	 *  leg's is merged with it into the one explaining more contacts (a tie: the one with the
+	 *  leg's, or comes within `gap` (m) of it (the rectangle grown by `gap` on every side), is
+	 *  merged with it into the one explaining more contacts (a tie: the one with the
 	 *  smaller x, then y; several overlapping: the first of them in that order). The
 	 *  other's explicit contacts are relinked to it, its evidence is merged into it and it is
 	 *  removed; a table left without legs is removed too. Appends the survivor of each merge to
 	 *  `kept` and the parent tables that lost a leg to `touched`; returns the merges made. */
-	size_t mergeOverlappingLegs(const std::vector<Id>& legs, std::vector<Id>& kept, std::vector<Id>& touched);
+	size_t mergeOverlappingLegs(
+		const std::vector<Id>& legs, std::vector<Id>& kept, std::vector<Id>& touched, double gap = 0);
 	/** Forgets the oldest unexplained contacts in the cell of contact `c` (cells of
 	 *  `cellSize`) beyond `keep`; returns how many were forgotten. */
 	size_t forgetUnexplained(Id c, size_t keep, double cellSize);
