@@ -80,6 +80,7 @@ TEST(TSlamParams, HundredParticleConfigDiffersOnlyInCountAndBatch)
 	EXPECT_EQ(a.manhattan_walls, b.manhattan_walls);
 	EXPECT_EQ(a.wall_axis, b.wall_axis);
 	EXPECT_EQ(a.wall_extension, b.wall_extension);
+	EXPECT_EQ(a.leg_merge_gap, b.leg_merge_gap);
 	EXPECT_EQ(a.resample_ess, b.resample_ess);
 	EXPECT_EQ(a.resampling, b.resampling);
 }
@@ -104,6 +105,9 @@ TEST_F(TSlamParamsTest, StrictKeysAndValues)
 	EXPECT_EQ(slam::TSlamParams::load(ini("[slam]\nwall_extension = 0.5\n")).wall_extension, 0.5);
 	EXPECT_EQ(slam::TSlamParams::load(ini("[slam]\n")).wall_extension, 0);
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nwall_extension = -0.1\n")), core::Error);
+	EXPECT_EQ(slam::TSlamParams::load(ini("[slam]\nleg_merge_gap = 0.02\n")).leg_merge_gap, 0.02);
+	EXPECT_EQ(slam::TSlamParams::load(ini("[slam]\n")).leg_merge_gap, 0);
+	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nleg_merge_gap = 2\n")), core::Error);
 	EXPECT_THROW(slam::TSlamParams::load(path("missing.ini")), core::Error);
 	// Exact odometry needs no [motion_model] (its matched model has zero noise); a noisy file
 	// without one is refused.

@@ -51,13 +51,15 @@ std::string truthBeside(const std::string& rawlog)
 
 /** Every particle's map: no history kept and no swept grid that nothing reads (the outputs
  *  come from a rebuild), and the sweeps annealed together, the Manhattan walls and the walls'
- *  extension that the SLAM config asks for. */
-void particleMaps(mrpt::maps::TSetOfMetricMapInitializers& inits, const slam::TSlamParams& params)
+ *  extension that the SLAM config asks for; with `filter`, also its leg merge gap (the maps
+ *  built after the filter keep the map config's own). */
+void particleMaps(mrpt::maps::TSetOfMetricMapInitializers& inits, const slam::TSlamParams& params, bool filter)
 {
 	for (auto& def : inits)
 		if (auto* ours = dynamic_cast<maps::CHierarchicalObjectMap::TMapDefinition*>(def.get()))
 		{
 			ours->insertionOptions.keep_history = false;
+			if (filter && params.leg_merge_gap > 0) ours->insertionOptions.lasting.leg_merge_gap = params.leg_merge_gap;
 			if (!ours->sweptGridRead()) ours->insertionOptions.record_swept = false;
 			if (params.batch_sweeps > 0) ours->insertionOptions.lasting.batch_sweeps = params.batch_sweeps;
 			if (params.wall_extension > 0) ours->likelihoodOptions.wall_extension = params.wall_extension;
@@ -92,7 +94,11 @@ int run(Options& o)
 	if (o.particles) params.particles = *o.particles;
 	if (o.seed) params.seed = *o.seed;
 	auto inits = maps::MapConfig::load(params.map_config);
-	particleMaps(inits, params);
+	particleMaps(inits, params, true);
+	// The maps built at a path after the filter (the smoother's, the one written): without
+	// the particles' leg merge gap, so legs mapped twice stay apart for the smoother (eq. S4).
+	auto built = maps::MapConfig::load(params.map_config);
+	particleMaps(built, params, false);
 	std::optional<world::World> world;
 	if (!o.world.empty()) world = world::World::load(o.world);
 	SlamOutputs::TRun result;
@@ -168,7 +174,11 @@ int run(Options& o)
 		estimated.rewind();
 		double t;
 		for (mrpt::math::TPose2D p; path.size() < n && estimated.next(t, p);) path.emplace_back(p.x, p.y, p.phi);
-		smoothed = SlamSmoothing(o.input, params).run(std::move(path), slam.bestMap().mappedSolids(), smoothing, inits);
+		// Particles that merge legs mapped twice leave their map no pairs to close loops on:
+		// then the first pass smooths against a map built at the particle's path instead.
+		const SlamSmoothing smoother(o.input, params);
+		auto solids = params.leg_merge_gap > 0 ? smoother.solidsAt(path, built) : slam.bestMap().mappedSolids();
+		smoothed = smoother.run(std::move(path), std::move(solids), smoothing, built);
 		result.smoothing = &*smoothed;
 		result.smoothingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count();
 	}
@@ -176,7 +186,7 @@ int run(Options& o)
 	// The map, rebuilt by whisker-map's runner and writer at the estimated path's poses: the
 	// smoothed path's, or without smoothing the best particle's (then the same insertions the
 	// particle made, so the same map: checked below).
-	mrpt::maps::CMultiMetricMap multimap(inits);
+	mrpt::maps::CMultiMetricMap multimap(smoothed ? built : inits);
 	auto map = multimap.mapByClass<maps::CHierarchicalObjectMap>();
 	MapOutputs outputs(out, *map, settings);
 	MapRunner runner(multimap, *map, 1, [&](size_t i, const Sweep& sw, double ms) { outputs.onStep(i, sw, ms); });

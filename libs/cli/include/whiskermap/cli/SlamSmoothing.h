@@ -25,13 +25,18 @@ class SlamSmoothing
 
 	/** Smooths `path` (one pose per sweep of the rawlog's first path.size(); fewer sweeps
 	 *  there: core::Error naming the rawlog) against `solids` (the best particle's mapped
-	 *  legs and walls); then, for each further pass (TSmoothParams::passes), maps the sweeps
+	 *  legs and walls, or those of a map rebuilt at its path: solidsAt); then, for each further pass (TSmoothParams::passes), maps the sweeps
 	 *  afresh at the smoothed path (a map of `maps`) and smooths again from it against that
 	 *  map's solids. The result is the last pass's, with costBefore at `path` (the first
 	 *  pass's) and the rounds and iterations of all passes. */
 	smooth::PathSmoother::TResult run(
 		std::vector<Eigen::Vector3d> path, std::vector<world::Obstacle> solids, const smooth::TSmoothParams& params,
 		const mrpt::maps::TSetOfMetricMapInitializers& maps) const;
+
+	/** The solids of a map of `maps` built by inserting the rawlog's first path.size() sweeps
+	 *  at `path`'s poses. */
+	std::vector<world::Obstacle> solidsAt(
+		const std::vector<Eigen::Vector3d>& path, const mrpt::maps::TSetOfMetricMapInitializers& maps) const;
 
 	/** The error for a rawlog read again after the filter that holds `found` sweeps where the
 	 *  filter read `read` (the file changed during the run). */
@@ -42,11 +47,6 @@ class SlamSmoothing
 	 *  `sweeps` sweeps (no path, no solids). Throws core::Error naming the rawlog when it
 	 *  holds fewer (changed since the filter read it) or is damaged. */
 	smooth::PathSmoother::TInput read(size_t sweeps) const;
-
-	/** The solids of a map of `maps` built by inserting the rawlog's first path.size() sweeps
-	 *  at `path`'s poses. */
-	std::vector<world::Obstacle> solidsAt(
-		const std::vector<Eigen::Vector3d>& path, const mrpt::maps::TSetOfMetricMapInitializers& maps) const;
 
 	std::string m_rawlog;
 	slam::TSlamParams m_slam;

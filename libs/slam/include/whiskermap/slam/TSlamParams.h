@@ -28,6 +28,11 @@ struct TSlamParams
 	/** Every particle's likelihood lengthens its mapped walls by this much at each end (the
 	 *  map's likelihoodOpts wall_extension, overridden for the particles; 0: the map config's own). */
 	double wall_extension = 0;
+	/** Every particle's map merges legs that come within this distance (m) of each other (its
+	 *  insertOpts leg_merge_gap, overridden for the particles only: the maps built after the
+	 *  filter keep the map config's own, so the smoother finds the legs mapped twice; 0: the
+	 *  map config's own). */
+	double leg_merge_gap = 0;
 	double resample_ess = 0.5;  ///< resample when the normalised effective sample size drops below this
 	mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling =
 		mrpt::bayes::CParticleFilter::prSystematic;
