@@ -129,8 +129,8 @@ TEST(LastingState, LegsBesideAreThoseWithAnotherLegWithinTheDistance)
 {
 	const ModelParams p;
 	LastingState st(p);
-	const std::vector<Leg> legs{
-		leg(1, 1, NONE, -1), leg(1.06, 1.03, NONE, -1), leg(-0.04, 2, NONE, -1), leg(0.04, 2, NONE, -1), leg(3, 3, NONE, -1)};
+	const std::vector<Leg> legs{leg(1, 1, NONE, -1), leg(1.06, 1.03, NONE, -1), leg(-0.04, 2, NONE, -1),
+								leg(0.04, 2, NONE, -1), leg(3, 3, NONE, -1)};
 	st.restore({}, {}, {}, legs, std::vector<LegEvidence>(legs.size()), {}, 0, p);
 	EXPECT_EQ(st.legsBeside(0.1), 4u);
 	EXPECT_EQ(st.legsBeside(0.07), 2u);  // 0.067 apart: beside; 0.08 apart: not

@@ -3,9 +3,10 @@
 # of the shipped default-odometry paper-arena log (datasets/slam/) writes every documented
 # output; its estimated path beats the odometry's ATE (whisker-eval --path) by a stated
 # margin, and smoothing the best particle's path beats that path; the same seed gives the same
-# bytes, in either rawlog layout; without smoothing the map it writes is the best particle's own; particles
-# that merge legs within a gap hold fewer legs beside another and are smoothed as well. HEAP: `measured`, or `unmeasured` in a build with AddressSanitizer
-# (summary.json's live heap is then null).
+# bytes, in either rawlog layout; without smoothing the map it writes is the best particle's
+# own; particles that merge legs within a gap hold fewer legs beside another and are smoothed
+# as well. HEAP: `measured`, or `unmeasured` in a build with AddressSanitizer (summary.json's
+# live heap is then null).
 set -euo pipefail
 trap 'echo "FAIL: line $LINENO: $BASH_COMMAND (exit $?)"' ERR
 slam=$1 eval=$2 src=$3 work=$4 heap=$5
@@ -89,8 +90,8 @@ python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); assert s["map_ma
 # other, so few legs stand beside another (2026-12-07, this seed: 2 of 281 against 192 of 387
 # in the particles' maps at the end), and the smoother, from a map rebuilt at the particle's
 # path, still brings the estimate under 4 cm (0.021 m against 0.022 m).
-sed -e 's#^map_config = .*#map_config = '"$src"'/config/whisker-map.ini#' -e 's#^leg_merge_gap = 0 #leg_merge_gap = 0.02 #' \
-  "$src/config/whisker-slam.ini" > "$work/gap.ini"
+sed -e 's#^map_config = .*#map_config = '"$src"'/config/whisker-map.ini#' \
+  -e 's#^leg_merge_gap = 0 #leg_merge_gap = 0.02 #' "$src/config/whisker-slam.ini" > "$work/gap.ini"
 grep -q '^leg_merge_gap = 0.02 ' "$work/gap.ini" || { echo "FAIL: the shipped config has no leg_merge_gap = 0"; exit 1; }
 "$slam" -q -c "$work/gap.ini" -i "${data}_obs.rawlog" -o "$work/g" --particles $particles --sweeps $sweeps --seed 7
 python3 - "$work/a/summary.json" "$work/g/summary.json" <<'PY' || { echo "FAIL: leg_merge_gap"; exit 1; }

@@ -25,9 +25,9 @@ class SlamSmoothing
 
 	/** Smooths `path` (one pose per sweep of the rawlog's first path.size(); fewer sweeps
 	 *  there: core::Error naming the rawlog) against `solids` (the best particle's mapped
-	 *  legs and walls, or those of a map rebuilt at its path: solidsAt); then, for each further pass (TSmoothParams::passes), maps the sweeps
-	 *  afresh at the smoothed path (a map of `maps`) and smooths again from it against that
-	 *  map's solids. The result is the last pass's, with costBefore at `path` (the first
+	 *  legs and walls, or those of a map rebuilt at its path: solidsAt); then, for each
+	 *  further pass (TSmoothParams::passes), maps the sweeps afresh at the smoothed path (a
+	 *  map of `maps`) and smooths again from it against that map's solids. The result is the last pass's, with costBefore at `path` (the first
 	 *  pass's) and the rounds and iterations of all passes. */
 	smooth::PathSmoother::TResult run(
 		std::vector<Eigen::Vector3d> path, std::vector<world::Obstacle> solids, const smooth::TSmoothParams& params,
