@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # whisker-slam over many filter seeds on a shipped SLAM log (doc/slam.md, doc/benchmarks.md):
 # per seed the raw and aligned ATE, final error, map F1, mean ms per step and resamplings, and
-# the best particle's raw ATE before smoothing; then the median and worst over the seeds and
-# how many beat the odometry alone.
+# the best particle's raw ATE before smoothing; then the median and worst over the seeds, how
+# many beat the odometry alone, and the floor: the same figures for whisker-slam --oracle.
 # Usage: scripts/bench-slam-seeds.sh [BUILD_DIR] [WORK_DIR]
 #   CONFIG=FILE.ini  the whisker-slam config (default config/whisker-slam.ini)
 #   LOG=paper_arena|random_yaw1   the datasets/slam/ log (obs layout; default paper_arena)
@@ -27,6 +27,9 @@ run() {
 export -f run
 export root
 printf '%s\n' ${SEEDS:-1 2 3 4 5 6 7 8 9 10} | xargs -P "${JOBS:-1}" -I{} bash -c 'run {}'
+# The floor: the true path smoothed against the true solids (--oracle; no filter, no seed).
+"$build/apps/whisker-slam/whisker-slam" -q -c "$config" -i "$root/datasets/slam/${log}_obs.rawlog" \
+  -o "$work/oracle" --world "$world" --oracle
 python3 - "$work" ${SEEDS:-1 2 3 4 5 6 7 8 9 10} <<'PY'
 import json, statistics, sys
 work, seeds = sys.argv[1], sys.argv[2:]
@@ -46,4 +49,9 @@ print(f"median over {len(rows)} seeds: ATE raw {med(0):.3f} m (worst {max(r[0] f
       f"final {med(2):.3f} m, map F1 {med(3):.2f} (worst {min(r[3] for r in rows):.2f}), centre RMSE {med(8):.3f} m (aligned {med(9):.3f} m), "
       f"{med(4):.0f} ms per step (mean); best particle ATE raw {med(7):.3f} m (worst {max(r[7] for r in rows):.3f}); "
       f"better than the odometry ({rows[0][6]:.3f} m) on {sum(r[0] < r[6] for r in rows)} of {len(rows)}")
+S, M = json.load(open(f"{work}/oracle/summary.json")), json.load(open(f"{work}/oracle/metrics.json"))
+e = S["estimated"]["trajectory"]
+print(f"floor (--oracle: the true path smoothed against the true solids): ATE raw {e['ate_rmse_m']:.3f} m, "
+      f"aligned {e['aligned_rmse_m']:.3f} m, final {e['final_error_m']:.3f} m, map F1 {M['f1']:.2f}, "
+      f"centre RMSE {M['rmse_m']:.3f} m (aligned {M['rmse_aligned_m']:.3f} m)")
 PY

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # check_slam_bad_input.sh WHISKER_SLAM SRC_DIR WORK_DIR: a missing rawlog, a bad config key (in
-# [slam] or [smooth]),
-# --particles 0, a truth file shorter than the run: one error line, non-zero exit, and the
-# output folder left exactly as it was.
+# [slam] or [smooth]), --particles 0, a truth file shorter than the run, --oracle without a
+# world or without a true path: one error line, non-zero exit, and the output folder left
+# exactly as it was.
 set -euo pipefail
 slam=$1 src=$2 work=$3
 expect_error="$(dirname "$0")/../apps/expect_error.sh"
@@ -23,6 +23,10 @@ printf '[slam]\nparticles = 0\n' > "$work/zero.ini"
 "$expect_error" "--particles 0: the filter needs at least one particle" "$slam" -i "$data" --particles 0 -o "$work/out"
 head -5 "$src/datasets/slam/paper_arena_obs_ground_truth_robot_path.txt" > "$work/short_truth.txt"
 "$expect_error" "short_truth.txt: 3 poses for 882 sweeps" "$slam" -i "$data" --truth "$work/short_truth.txt" -o "$work/out"
+world="$src/config/worlds/paper_arena.ini"
+"$expect_error" "--oracle needs --world" "$slam" -i "$data" --oracle -o "$work/out"
+ln -s "$data" "$work/no_truth.rawlog"  # no _ground_truth_robot_path.txt beside it
+"$expect_error" "--oracle needs the true path .*no_truth.rawlog" "$slam" -i "$work/no_truth.rawlog" --world "$world" --oracle -o "$work/out"
 [[ "$(ls -A "$work/out")" == "estimated_path.txt" ]] || { echo "FAIL: output folder changed:"; ls -A "$work/out"; exit 1; }
 [[ "$(cat "$work/out/estimated_path.txt")" == "previous result" ]] || { echo "FAIL: previous result overwritten"; exit 1; }
 echo "ok: bad input changes nothing"

@@ -53,17 +53,22 @@ void drawPaths(OutputDir& out, const SlamOutputs::TRun& run, const MapOutputs::T
 	for (const auto& t : run.mapTables) img.table(t, MAP, 2);
 	img.path(picturePoses(run.odometryFile, run.sweeps), ODOMETRY, 1);
 	if (!run.truthPath.empty()) img.path(picturePoses(run.truthPath, run.sweeps), TRUTH, 1);
-	if (run.smoothing) img.path(picturePoses(run.filterFile, run.sweeps), FILTER, 1);
+	if (run.smoothing && !run.filterFile.empty()) img.path(picturePoses(run.filterFile, run.sweeps), FILTER, 1);
 	img.path(picturePoses(run.estimatedFile, run.sweeps), ESTIMATE, 2);
-	img.caption(std::filesystem::path(run.input).filename().string() + ": paths and the best particle's map");
-	img.caption(std::string(run.smoothing ? "SLAM smoothed (red), best particle (pink)" : "SLAM (red)") + ", odometry (orange)" + (run.truthPath.empty() ? "" : ", truth (blue)") +
-				", map (grey)" + (s.world ? ", true tables" : ""));
+	const std::string what = run.oracle ? "oracle (red)"
+						   : run.smoothing ? "SLAM smoothed (red), best particle (pink)"
+										   : "SLAM (red)";
+	img.caption(std::filesystem::path(run.input).filename().string() + ": paths and the " +
+				(run.oracle ? "map at the oracle's path" : "best particle's map"));
+	img.caption(what + ", odometry (orange)" + (run.truthPath.empty() ? "" : ", truth (blue)") + ", map (grey)" +
+				(s.world ? ", true tables" : ""));
 	img.save(out.path("paths.png"));
 }
 
 struct Scores
 {
-	eval::TrajectoryEvaluation estimated, odometry, filter;
+	eval::TrajectoryEvaluation estimated, odometry;
+	std::optional<eval::TrajectoryEvaluation> filter;  ///< none without a filter (oracle)
 };
 
 void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const std::optional<Scores>& scores)
@@ -73,8 +78,8 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 	for (const double e : st.ess.items()) ess.push_back(std::round(e * 1e4) / 1e4);
 	const auto& p = *run.params;
 	nlohmann::ordered_json j;  // a JSON writer: any path (quotes, backslashes) stays valid JSON
-	j["input"] = run.input, j["config"] = run.config, j["map_config"] = run.mapConfig;
-	j["particles"] = run.particles, j["particles_config"] = p.particles, j["seed"] = p.seed, j["sweeps"] = st.count;
+	j["input"] = run.input, j["config"] = run.config, j["map_config"] = run.mapConfig, j["oracle"] = run.oracle;
+	j["particles"] = run.particles, j["particles_config"] = p.particles, j["seed"] = p.seed, j["sweeps"] = run.sweeps;
 	j["time_per_step_ms"] = {
 		{"mean", st.count ? st.totalMs / st.count : 0.0},
 		{"median", quantile(st.ms.items(), 0.5)},
@@ -101,7 +106,7 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 		j["truth"] = run.truthPath;
 		j["estimated"] = trajectoryJson(scores->estimated);
 		j["odometry"] = trajectoryJson(scores->odometry);
-		j["filter"] = trajectoryJson(scores->filter);
+		if (scores->filter) j["filter"] = trajectoryJson(*scores->filter);
 	}
 	j["wall_time_s"] = run.wallSeconds;
 	j["peak_rss_mb"] = core::peakRssMb();
@@ -131,20 +136,26 @@ std::string SlamOutputs::write(OutputDir& out, const TRun& run, const MapOutputs
 		const eval::EvalOptions o;
 		scores = Scores{
 			eval::TrajectoryEvaluation::compute(run.estimatedFile, run.truthPath, o, run.sweeps),
-			eval::TrajectoryEvaluation::compute(run.odometryFile, run.truthPath, o, run.sweeps),
-			eval::TrajectoryEvaluation::compute(run.filterFile, run.truthPath, o, run.sweeps)};
+			eval::TrajectoryEvaluation::compute(run.odometryFile, run.truthPath, o, run.sweeps), std::nullopt};
+		if (!run.filterFile.empty())
+			scores->filter = eval::TrajectoryEvaluation::compute(run.filterFile, run.truthPath, o, run.sweeps);
 	}
 	drawPaths(out, run, picture);
 	writeSummary(out.path("summary.json"), run, scores);
 	char line[256];
-	std::snprintf(line, sizeof(line), "%zu sweeps, %zu particle%s, %zu tables", run.sweeps, run.particles, run.particles == 1 ? "" : "s",
-				  run.mapTables.size());
+	if (run.oracle)
+		std::snprintf(line, sizeof(line), "%zu sweeps, oracle, %zu tables", run.sweeps, run.mapTables.size());
+	else
+		std::snprintf(line, sizeof(line), "%zu sweeps, %zu particle%s, %zu tables", run.sweeps, run.particles,
+					  run.particles == 1 ? "" : "s", run.mapTables.size());
 	std::string text = line;
 	if (scores)
 	{
 		const auto &e = scores->estimated, &d = scores->odometry;
-		std::snprintf(line, sizeof(line), "; ATE RMSE %.3f m (aligned %.3f; best particle %.3f), odometry %.3f m (aligned %.3f)",
-					  e.ate_rmse_m, e.aligned_rmse_m, scores->filter.ate_rmse_m, d.ate_rmse_m, d.aligned_rmse_m);
+		std::snprintf(line, sizeof(line), "; ATE RMSE %.3f m (aligned %.3f", e.ate_rmse_m, e.aligned_rmse_m);
+		text += line;
+		if (scores->filter) std::snprintf(line, sizeof(line), "; best particle %.3f", scores->filter->ate_rmse_m), text += line;
+		std::snprintf(line, sizeof(line), "), odometry %.3f m (aligned %.3f)", d.ate_rmse_m, d.aligned_rmse_m);
 		text += line;
 	}
 	return text;

@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <deque>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 namespace whiskermap::cli
@@ -39,6 +40,7 @@ struct Options
 	std::optional<uint64_t> seed;
 	size_t sweeps = 0;  ///< 0: all
 	bool quiet = false;
+	bool oracle = false;  ///< no filter: the true path smoothed against the true world's solids
 };
 
 /** The true path beside the rawlog, as whisker-sim writes it, if there is one. */
@@ -84,6 +86,69 @@ bool sameTables(std::vector<world::Table> a, std::vector<world::Table> b)
 	return true;
 }
 
+/** What the filter and the oracle write as they read the sweeps. */
+struct Streams
+{
+	world::PathLog::Writer& odometry;
+	PoseSpool& start;  ///< the path the smoother starts from: the best particle's, or the truth
+};
+
+/** Runs the particle filter over the first `n` sweeps; the best particle's path goes to
+ *  `io.start` as its poses settle, the filter's figures to `result`. */
+std::unique_ptr<slam::RbpfSlam> runFilter(
+	const Options& o, size_t n, const slam::TSlamParams& params, const mrpt::maps::TSetOfMetricMapInitializers& inits,
+	Streams io, SlamOutputs::TRun& result)
+{
+	auto slam = std::make_unique<slam::RbpfSlam>(params, inits);
+	result.particles = slam->particles().particlesCount();
+	if (!o.quiet && result.particles < params.particles)
+		std::fprintf(stderr, "whisker-slam: odometry told exact: 1 particle (the %u asked for would each follow the "
+					 "same path and build the same map)\n", params.particles);
+	std::deque<double> times;  // timestamps of the sweeps whose poses have not settled
+	const auto settled = [&](const mrpt::poses::CPose2D& p) {
+		if (times.empty()) throw core::Error("whisker-slam: more poses settled than sweeps (a bug)");
+		io.start.write(times.front(), p.asTPose());
+		times.pop_front();
+	};
+	const bool bar = !o.quiet && ::isatty(STDERR_FILENO);
+	size_t k = 0;
+	obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
+		if (k >= n) return;
+		const double t = mrpt::Clock::toDouble(sw.obs->timestamp);
+		io.odometry.write(t, sw.robotPose);
+		times.push_back(t);
+		const auto& step = slam->step(sw);
+		slam->settle(settled);
+		result.steps.add(step.ms, step.ess, step.resampled, slam->paths().nodes());
+		k++;
+		if (k == std::max<size_t>(n / 10, 1))
+			result.filterRssTenthMb = core::peakRssMb(), result.filterHeapTenthMb = core::heapInUseMb(),
+			result.filterMapsTenth = slam->mapTotals();
+		if (bar && (k % 10 == 0 || k == n))
+			std::fprintf(stderr, "\rwhisker-slam: %zu/%zu sweeps, %zu particles, ESS %.2f", k, n, result.particles,
+						 step.ess);
+	});
+	if (bar) std::fprintf(stderr, "\n");
+	result.filterRssMb = core::peakRssMb();
+	result.filterHeapMb = core::heapInUseMb();
+	result.filterMaps = slam->mapTotals();
+	for (const auto& p : slam->bestPath()) settled(p);
+	return slam;
+}
+
+/** --oracle: no filter; the true path (`truth`, checked to hold `n` poses) goes to `io.start`. */
+void oracleStart(const Options& o, size_t n, const std::string& truth, Streams io)
+{
+	world::PathLog::Reader r(truth);
+	world::PathLog::Entry e;
+	obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
+		if (r.count() >= n || !r.next(e)) return;
+		const double t = mrpt::Clock::toDouble(sw.obs->timestamp);
+		io.odometry.write(t, sw.robotPose);
+		io.start.write(t, e.pose);
+	});
+}
+
 int run(Options& o)
 {
 	// Everything that can be wrong with the inputs is checked before any output is made.
@@ -101,6 +166,7 @@ int run(Options& o)
 	particleMaps(built, params, false);
 	std::optional<world::World> world;
 	if (!o.world.empty()) world = world::World::load(o.world);
+	if (o.oracle && !world) throw core::Error("--oracle needs --world: the true solids to smooth against");
 	SlamOutputs::TRun result;
 	result.input = o.input, result.config = o.config, result.mapConfig = params.map_config, result.params = &params;
 	result.truthPath = o.truth.empty() ? truthBeside(o.input) : o.truth;
@@ -111,6 +177,8 @@ int run(Options& o)
 		throw core::Error(o.input + ": holds no whisker observations (CObservationWhiskerContacts)");
 	const size_t n = o.sweeps ? std::min(o.sweeps, all) : all;
 	result.sweeps = n;
+	if (o.oracle && result.truthPath.empty())
+		throw core::Error("--oracle needs the true path (--truth, or " + o.input + "'s _ground_truth_robot_path.txt)");
 	if (!result.truthPath.empty())
 	{
 		const size_t poses = world::PathLog::count(result.truthPath, n);
@@ -124,50 +192,22 @@ int run(Options& o)
 	settings.sweeps = n, settings.maxSigmaR = contents.maxSigmaR;
 	MapOutputs::pictureBounds(contents, settings.world, settings);
 
-	// The filter. The paths go to disk as they settle: memory holds the particles' maps and
-	// the poses not yet settled (doc/slam.md, "Memory").
+	// The filter (or, for --oracle, the truth). The paths go to disk as they settle: memory
+	// holds the particles' maps and the poses not yet settled (doc/slam.md, "Memory").
 	const auto t0 = std::chrono::steady_clock::now();
 	OutputDir out(o.outdir);
-	slam::RbpfSlam slam(params, inits);
-	result.particles = slam.particles().particlesCount();
-	if (!o.quiet && result.particles < params.particles)
-		std::fprintf(stderr, "whisker-slam: odometry told exact: 1 particle (the %u asked for would each follow the "
-					 "same path and build the same map)\n", params.particles);
+	result.oracle = o.oracle;
 	result.odometryFile = out.path(SlamOutputs::ODOMETRY), result.estimatedFile = out.path(SlamOutputs::ESTIMATED);
 	world::PathLog::Writer odometry(result.odometryFile, SlamOutputs::ODOMETRY_TITLE);
-	PoseSpool estimated;  // the best path, exact, for the map rebuilt at it
-	std::deque<double> times;  // timestamps of the sweeps whose poses have not settled
-	const auto settled = [&](const mrpt::poses::CPose2D& p) {
-		if (times.empty()) throw core::Error("whisker-slam: more poses settled than sweeps (a bug)");
-		estimated.write(times.front(), p.asTPose());
-		times.pop_front();
-	};
-	const bool bar = !o.quiet && ::isatty(STDERR_FILENO);
-	size_t k = 0;
-	obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
-		if (k >= n) return;
-		const double t = mrpt::Clock::toDouble(sw.obs->timestamp);
-		odometry.write(t, sw.robotPose);
-		times.push_back(t);
-		const auto& step = slam.step(sw);
-		slam.settle(settled);
-		result.steps.add(step.ms, step.ess, step.resampled, slam.paths().nodes());
-		k++;
-		if (k == std::max<size_t>(n / 10, 1))
-			result.filterRssTenthMb = core::peakRssMb(), result.filterHeapTenthMb = core::heapInUseMb(),
-			result.filterMapsTenth = slam.mapTotals();
-		if (bar && (k % 10 == 0 || k == n))
-			std::fprintf(stderr, "\rwhisker-slam: %zu/%zu sweeps, %zu particles, ESS %.2f", k, n, result.particles,
-						 step.ess);
-	});
-	if (bar) std::fprintf(stderr, "\n");
-	result.filterRssMb = core::peakRssMb();
-	result.filterHeapMb = core::heapInUseMb();
-	result.filterMaps = slam.mapTotals();
+	PoseSpool estimated;  // the path the smoother starts from, exact, for the map rebuilt at it
+	std::unique_ptr<slam::RbpfSlam> slam;
+	if (o.oracle)
+		oracleStart(o, n, result.truthPath, {odometry, estimated});
+	else
+		slam = runFilter(o, n, params, inits, {odometry, estimated}, result);
 	odometry.close();
-	for (const auto& p : slam.bestPath()) settled(p);
 	std::optional<smooth::PathSmoother::TResult> smoothed;
-	if (smoothing.enabled)
+	if (smoothing.enabled || o.oracle)
 	{
 		const auto ts = std::chrono::steady_clock::now();
 		std::vector<Eigen::Vector3d> path;
@@ -177,8 +217,12 @@ int run(Options& o)
 		// Particles that merge legs mapped twice leave their map no pairs to close loops on:
 		// then the first pass smooths against a map built at the particle's path instead.
 		const SlamSmoothing smoother(o.input, params);
-		auto solids = params.leg_merge_gap > 0 ? smoother.solidsAt(path, built) : slam.bestMap().mappedSolids();
-		smoothed = smoother.run(std::move(path), std::move(solids), smoothing, built);
+		auto solids = o.oracle					  ? world->obstacles()
+					  : params.leg_merge_gap > 0 ? smoother.solidsAt(path, built)
+												 : slam->bestMap().mappedSolids();
+		auto passes = smoothing;
+		if (o.oracle) passes.passes = 1;  // a further pass would smooth against our own map
+		smoothed = smoother.run(std::move(path), std::move(solids), passes, built);
 		result.smoothing = &*smoothed;
 		result.smoothingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count();
 	}
@@ -190,16 +234,16 @@ int run(Options& o)
 	auto map = multimap.mapByClass<maps::CHierarchicalObjectMap>();
 	MapOutputs outputs(out, *map, settings);
 	MapRunner runner(multimap, *map, 1, [&](size_t i, const Sweep& sw, double ms) { outputs.onStep(i, sw, ms); });
-	result.filterFile = out.path(SlamOutputs::FILTER);
 	world::PathLog::Writer estimatedText(result.estimatedFile, SlamOutputs::ESTIMATED_TITLE);
-	world::PathLog::Writer filterText(result.filterFile, SlamOutputs::FILTER_TITLE);
+	std::optional<world::PathLog::Writer> filterText;
+	if (slam) result.filterFile = out.path(SlamOutputs::FILTER), filterText.emplace(result.filterFile, SlamOutputs::FILTER_TITLE);
 	estimated.rewind();
-	k = 0;
+	size_t k = 0;
 	obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
 		double t;
 		mrpt::math::TPose2D pose;
 		if (k >= n || !estimated.next(t, pose)) return;
-		filterText.write(t, mrpt::poses::CPose2D(pose));
+		if (filterText) filterText->write(t, mrpt::poses::CPose2D(pose));
 		const auto& s = smoothed ? smoothed->path[k] : Eigen::Vector3d(pose.x, pose.y, pose.phi);
 		const mrpt::poses::CPose2D at(s[0], s[1], s[2]);
 		estimatedText.write(t, at);
@@ -209,8 +253,8 @@ int run(Options& o)
 	if (k < n) throw SlamSmoothing::shorter(o.input, k, n);
 	runner.flush();
 	estimatedText.close();
-	filterText.close();
-	if (!smoothed) result.mapMatches = sameTables(map->mapTables(), slam.bestMap().mapTables());
+	if (filterText) filterText->close();
+	if (!smoothed) result.mapMatches = sameTables(map->mapTables(), slam->bestMap().mapTables());
 	map->annealPending();  // the last sweeps of a batch (batch_sweeps): the particle's own map has them pending
 	result.mapTables = map->mapTables();
 	if (result.mapMatches == false && !o.quiet)
@@ -252,6 +296,10 @@ int WhiskerSlamApp::main(int argc, char** argv)
 				   "(default: <rawlog>_ground_truth_robot_path.txt beside the rawlog, if there)");
 	app.add_option("--world", o.world, "Ground-truth world .ini: drawn in the pictures, the map scored against it");
 	app.add_option("--sweeps", o.sweeps, "Use only the first N sweeps (0: all)")->capture_default_str();
+	app.add_flag("--oracle", o.oracle,
+				 "No filter: the true path smoothed (one pass) against the --world's legs and walls, the data association "
+				 "and the solids' shapes known; the floor of this estimator on the log (doc/slam.md, \"The floor\"). "
+				 "Writes no filter_path.txt");
 	app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
 	return runApp(app, argc, argv, "whisker-slam", [&] { return run(o); });
 }

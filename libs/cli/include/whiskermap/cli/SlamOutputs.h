@@ -35,7 +35,9 @@ struct SlamOutputs
 		const slam::TSlamParams* params = nullptr;
 		size_t sweeps = 0;  ///< lines in each path file (the truth file's first `sweeps` are scored)
 		size_t particles = 0;  ///< the particles the filter ran (params->filterParticles())
-		std::string estimatedFile, odometryFile, filterFile;  ///< the path files, written (staged)
+		std::string estimatedFile, odometryFile;  ///< the path files, written (staged)
+		std::string filterFile;  ///< the best particle's path, written (staged); empty: no filter (oracle)
+		bool oracle = false;  ///< whisker-slam --oracle: no filter, the true path smoothed against the true solids
 		StepFigures steps;
 		std::vector<world::Table> mapTables;  ///< the best particle's map
 		/** Without smoothing: the rebuilt map equals the best particle's map (with smoothing the
