@@ -3,6 +3,7 @@
 #include <whiskermap/smooth/ContactFactor.h>
 #include <whiskermap/smooth/OdometryFactor.h>
 #include <whiskermap/smooth/SameSolidFactor.h>
+#include <whiskermap/smooth/TableShapeFactor.h>
 
 #include <Eigen/Geometry>
 
@@ -86,6 +87,27 @@ TEST(SameSolidFactor, AWallIsHeldAcrossOnly)
 	EXPECT_NEAR(f.residual(Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()).norm(), 50, 1e-9);
 	EXPECT_LT(f.residual(Eigen::Vector2d(0.3, -0.25), Eigen::Vector2d::Zero()).norm(), 1e-12);  // eq. S5: along is free
 	EXPECT_NEAR(f.residual(Eigen::Vector2d(0, -0.245), Eigen::Vector2d::Zero()).norm(), 1, 1e-9);
+}
+
+TEST(TableShapeFactor, HoldsTheLegsDistanceNotTheirDirection)
+{
+	const smooth::TableShapeFactor f{0, 1, Eigen::Vector2d(1.0, 0.6), 0.005};  // c_a - c_b: a table's diagonal
+	const Eigen::Vector2d zero = Eigen::Vector2d::Zero();
+	EXPECT_EQ(f.residual(zero, zero), 0);
+	EXPECT_EQ(f.residual(Eigen::Vector2d(0.2, -0.1), Eigen::Vector2d(0.2, -0.1)), 0);  // moved together
+	const double turn = 0.3;  // the table turned about leg b
+	const Eigen::Vector2d turned = Eigen::Rotation2Dd(turn) * f.offset;
+	EXPECT_NEAR(f.residual(turned - f.offset, zero), 0, 1e-12);
+	// 5 mm farther apart along the diagonal is one std-dev (eq. S7).
+	EXPECT_NEAR(f.residual(f.offset.normalized() * 0.005, zero), 1, 1e-12);
+	EXPECT_NEAR(f.residual(zero, f.offset.normalized() * 0.005), -1, 1e-12);
+	const Eigen::Vector2d da(0.01, -0.02), db(-0.03, 0.005);
+	Eigen::RowVector2d J;
+	f.residual(da, db, &J);
+	const auto n = numeric<2>([&](const Eigen::Vector2d& x) { return Eigen::VectorXd::Constant(1, f.residual(x, db)); }, da);
+	const auto nb = numeric<2>([&](const Eigen::Vector2d& x) { return Eigen::VectorXd::Constant(1, f.residual(da, x)); }, db);
+	EXPECT_LT((J - n).cwiseAbs().maxCoeff(), 1e-4 * J.cwiseAbs().maxCoeff());
+	EXPECT_LT((-J - nb).cwiseAbs().maxCoeff(), 1e-4 * J.cwiseAbs().maxCoeff());
 }
 
 TEST(ContactFactor, TiesAContactToTheFaceItTouches)

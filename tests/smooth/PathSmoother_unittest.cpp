@@ -175,6 +175,46 @@ TEST(PathSmoother, ALegMappedTwiceIsHeldToOnePlace)
 	EXPECT_GT(Corridor::worst(alone.path, c.truth), 0.01);
 }
 
+TEST(PathSmoother, ATableKeepsItsShapeAcrossABlindStep)
+{
+	// The corridor with exact odometry and a blind step (ALegMappedTwiceIsHeldToOnePlace), the
+	// end wall replaced by a table right of the path, centred at (2.925, -0.4): before the blind
+	// step the robot touches its leg at (2.425, -0.1) on the -x and +y faces, after it only the
+	// leg at (3.425, -0.7), on the same faces. The particle mapped the table 5 cm short along x.
+	// Each leg alone, the second half of the path and the far leg's shift share those 5 cm; the
+	// table's known size (eq. S7) puts the far leg where the near one says, and the path on the
+	// truth.
+	Corridor c;
+	c.blindStep(c.in.covariances[1]);
+	for (size_t i = 21; i < c.truth.size(); i++) c.in.path[i][0] -= 0.03;  // the start: the truth
+	world::Table t;
+	t.x = 2.925 - 0.05, t.y = -0.4, t.length = 1, t.width = 0.6, t.leg_width = 0.05;
+	c.in.solids.pop_back();
+	for (int k = 0; k < 4; k++) c.in.solids.push_back(t.leg(k, 0));
+	auto& contacts = c.in.contacts;
+	std::vector<baseline::Contact> faces;
+	for (size_t i = 0; i < contacts.size(); i += 2)  // [i] the side wall, [i + 1] ahead
+	{
+		const double x = c.truth[contacts[i].sweep][0];
+		const Eigen::Vector2d leg = contacts[i].sweep <= 20 ? Eigen::Vector2d(2.425, -0.1) : Eigen::Vector2d(3.425, -0.7);
+		auto& ahead = contacts[i + 1];  // the leg's -x face
+		ahead.p = {leg.x() - 0.025 - x, leg.y()}, ahead.shaft = ahead.p.normalized();
+		baseline::Contact side = ahead;  // its +y face
+		side.p = {leg.x() - x, leg.y() + 0.025}, side.normal = M_PI / 2, side.shaft = side.p.normalized();
+		faces.push_back(side);
+	}
+	contacts.insert(contacts.end(), faces.begin(), faces.end());
+	smooth::TSmoothParams p;
+	p.gate = 0.08;  // the table is mapped 5 cm off
+	const auto alone = PathSmoother::run(c.in, p);
+	EXPECT_EQ(alone.tied, contacts.size());
+	EXPECT_GT(Corridor::worst(alone.path, c.truth), 0.015);
+	p.table_sigma = 0.005;
+	const auto shaped = PathSmoother::run(c.in, p);
+	EXPECT_EQ(shaped.tied, contacts.size());
+	EXPECT_LT(Corridor::worst(shaped.path, c.truth), 0.002);
+}
+
 TEST(PathSmoother, AWallMappedTwiceIsHeldToOneLine)
 {
 	// ALegMappedTwiceIsHeldToOnePlace with the end wall itself: the second half of the path

@@ -31,7 +31,7 @@ TEST_F(TSmoothParamsTest, DefaultsWithoutTheSectionAndEveryKeyRead)
 	const auto p = smooth::TSmoothParams::load(ini(
 		"[smooth]\nenabled = false\ngate = 0.1\nnormal_gate_deg = 30\nposition_floor = 0.003\nhuber = 1.5\n"
 		"solid_sigma = 2\nrounds = 3\niterations = 7\npasses = 2\nduplicate_sigma = 0.01\nduplicate_shrink = 0.2\n"
-		"duplicate_distance = 0.05\nduplicate_wall_distance = 0.2\n"));
+		"duplicate_distance = 0.05\nduplicate_wall_distance = 0.2\ntable_sigma = 0.004\n"));
 	EXPECT_FALSE(p.enabled);
 	EXPECT_DOUBLE_EQ(p.gate, 0.1);
 	EXPECT_NEAR(p.normal_gate, M_PI / 6, 1e-12);
@@ -45,6 +45,8 @@ TEST_F(TSmoothParamsTest, DefaultsWithoutTheSectionAndEveryKeyRead)
 	EXPECT_DOUBLE_EQ(p.duplicate_shrink, 0.2);
 	EXPECT_DOUBLE_EQ(p.duplicate_distance, 0.05);
 	EXPECT_DOUBLE_EQ(p.duplicate_wall_distance, 0.2);
+	EXPECT_DOUBLE_EQ(p.table_sigma, 0.004);
+	EXPECT_EQ(d.table_sigma, 0);  // off unless asked for
 }
 
 TEST_F(TSmoothParamsTest, BadValuesAndUnknownKeysNameTheFileAndKey)
@@ -68,6 +70,7 @@ TEST_F(TSmoothParamsTest, BadValuesAndUnknownKeysNameTheFileAndKey)
 		EXPECT_NE(std::string(e.what()).find("[smooth] gates: unknown key"), std::string::npos) << e.what();
 	}
 	EXPECT_THROW(smooth::TSmoothParams::load(ini("[smooth]\npasses = 0\n")), core::Error);
+	EXPECT_THROW(smooth::TSmoothParams::load(ini("[smooth]\ntable_sigma = -0.01\n")), core::Error);
 	EXPECT_THROW(smooth::TSmoothParams::load(path("missing.ini")), core::Error);
 }
 

@@ -6,6 +6,7 @@
 #include <whiskermap/smooth/OdometryFactor.h>
 #include <whiskermap/smooth/PathSmoother.h>
 #include <whiskermap/smooth/SameSolidFactor.h>
+#include <whiskermap/smooth/TableShapeFactor.h>
 #include <whiskermap/smooth/WallLines.h>
 
 #include <Eigen/SparseCholesky>
@@ -32,6 +33,7 @@ struct Problem
 	const std::vector<OdometryFactor>& odometry;
 	std::vector<ContactFactor> contacts;
 	std::vector<SameSolidFactor> same;
+	std::vector<TableShapeFactor> shape;
 	size_t poses, groups;
 	double huber, solidSigma;
 	double outlier = 0;  ///< metres: a contact farther than this from its face costs as if this far (0: no cap)
@@ -61,6 +63,7 @@ struct Problem
 			c += outlier > 0 ? std::min(l, loss(outlier / f.sigma)) : l;
 		}
 		for (const auto& f : same) c += f.residual(d[f.a], d[f.b]).squaredNorm();  // eqs. S4, S5
+		for (const auto& f : shape) c += std::pow(f.residual(d[f.a], d[f.b]), 2);  // eq. S7
 		for (const auto& g : d) c += g.squaredNorm() / (solidSigma * solidSigma);
 		return c;
 	}
@@ -71,7 +74,7 @@ struct Problem
 		const auto& x = s.path;
 		const auto& d = s.shifts;
 		std::vector<Eigen::Triplet<double>> t;
-		t.reserve(60 * poses + 25 * contacts.size() + 16 * same.size() + 4 * groups);
+		t.reserve(60 * poses + 25 * contacts.size() + 16 * (same.size() + shape.size()) + 4 * groups);
 		b = Eigen::VectorXd::Zero(static_cast<long>(size()));
 		// One residual's share, weight w: its Jacobian blocks, each (column (-1: fixed), block).
 		auto add = [&](const auto& r, double w, const auto&... blocks) {
@@ -108,6 +111,12 @@ struct Problem
 		for (const auto& f : same)
 			add(f.residual(d[f.a], d[f.b]), 1, make_pair(groupColumn(f.a), Eigen::Matrix2d(f.P / f.sigma)),
 				make_pair(groupColumn(f.b), Eigen::Matrix2d(-f.P / f.sigma)));
+		for (const auto& f : shape)
+		{
+			Eigen::RowVector2d J;
+			const double r = f.residual(d[f.a], d[f.b], &J);
+			add(Eigen::Matrix<double, 1, 1>(r), 1, make_pair(groupColumn(f.a), J), make_pair(groupColumn(f.b), Eigen::RowVector2d(-J)));
+		}
 		const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
 		for (size_t g = 0; g < groups; g++)
 			add(Eigen::Vector2d(d[g] / solidSigma), 1, make_pair(groupColumn(g), Eigen::Matrix2d(I / solidSigma)));
@@ -115,6 +124,12 @@ struct Problem
 		H.setFromTriplets(t.begin(), t.end());
 	}
 };
+
+Eigen::Vector2d centre(const world::Obstacle& o)
+{
+	const auto& c = o.corners;
+	return (c[0] + c[1] + c[2] + c[3]) / 4;
+}
 
 /** The hypotheses that two mapped solids are one, from the contacts first tied: eq. S4's
  *  factors for the legs the map holds twice, in sets by the two mapped tables they pair (a table
@@ -126,15 +141,11 @@ std::vector<std::vector<SameSolidFactor>> sameSolids(
 	std::vector<bool> touched(solids.size(), false);
 	std::vector<Eigen::Vector2d> facing(groups, Eigen::Vector2d::Zero());
 	for (const auto& f : contacts) touched[f.solid] = true, facing[f.group] += f.n;
-	const auto centre = [&](size_t k) {
-		const auto& c = solids[k].corners;
-		return Eigen::Vector2d((c[0] + c[1] + c[2] + c[3]) / 4);
-	};
 	std::map<std::pair<int, int>, std::vector<SameSolidFactor>> byTables;
 	for (const auto& [i, j] : DuplicateLegs::find(solids, touched, params.duplicate_shrink, params.duplicate_distance))
 		if (groupOf[i] != groupOf[j])
 			byTables[std::minmax(solids[i].table, solids[j].table)].push_back(
-				{groupOf[i], groupOf[j], centre(i) - centre(j), params.duplicate_sigma});
+				{groupOf[i], groupOf[j], centre(solids[i]) - centre(solids[j]), params.duplicate_sigma});
 	std::vector<std::vector<SameSolidFactor>> sets;
 	for (auto& [tables, set] : byTables) sets.push_back(std::move(set));
 	std::stable_sort(sets.begin(), sets.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
@@ -150,6 +161,20 @@ double dof(const std::vector<SameSolidFactor>& factors)
 	double k = 0;
 	for (const auto& f : factors) k += f.dof();
 	return k;
+}
+
+/** Eq. S7's factors: every two legs of one mapped table (each in its own group) keep their
+ *  distance (none when `sigma` is 0). */
+std::vector<TableShapeFactor> tableShapes(
+	const std::vector<world::Obstacle>& solids, const std::vector<size_t>& groupOf, double sigma)
+{
+	std::vector<TableShapeFactor> shapes;
+	if (sigma <= 0) return shapes;
+	for (size_t i = 0; i < solids.size(); i++)
+		for (size_t j = i + 1; j < solids.size(); j++)
+			if (solids[i].table >= 0 && solids[i].table == solids[j].table && groupOf[i] != groupOf[j])
+				shapes.push_back({groupOf[i], groupOf[j], centre(solids[i]) - centre(solids[j]), sigma});
+	return shapes;
 }
 
 /** Ties every contact seen from x to the nearest face of the shifted solids (pb.contacts). */
@@ -259,7 +284,8 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	odometry.reserve(n);
 	for (size_t i = 0; i < n; i++) odometry.emplace_back(in.increments[i], in.covariances[i]);
 	const State start{in.path, std::vector<Eigen::Vector2d>(groups, Eigen::Vector2d::Zero())};
-	Problem pb{odometry, {}, {}, n, groups, params.huber, params.solid_sigma};
+	Problem pb{odometry, {}, {}, tableShapes(solids, out.groupOf, params.table_sigma), n, groups, params.huber,
+			   params.solid_sigma};
 	const auto finish = [&](State x) {
 		out.path = std::move(x.path), out.shifts = std::move(x.shifts);
 		return out;

@@ -28,6 +28,9 @@ struct TSmoothParams
 	 *  far apart across, are one wall (DuplicateWalls; eq. S5; 0: never). */
 	double duplicate_wall_distance = 0.3;
 	double solid_sigma = 1;  ///< metres: prior std-dev of each solid's shift (walls slide along themselves)
+	/** Metres: std-dev of eq. S7, which keeps the distance between two legs of one mapped table
+	 *  (TableShapeFactor; 0: each leg free). */
+	double table_sigma = 0;
 	unsigned rounds = 6;  ///< association rounds (each re-ties the contacts, then solves)
 	unsigned iterations = 10;  ///< Levenberg-Marquardt iterations per round, at most
 	/** Smoothing passes: the first against the best particle's map, each further one against
