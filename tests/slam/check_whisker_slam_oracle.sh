@@ -25,7 +25,8 @@ done
 # Measured 2026-12-07: 1,251 contacts tied; raw ATE 0.020 m (aligned 0.012 m), odometry 0.173 m;
 # whisker_slam_outputs' SLAM run on the same prefix: 0.022 m. Asserted: every figure with a margin,
 # and the oracle beats the odometry fivefold.
-python3 - "$work/a/summary.json" "$work/a/metrics.json" "$sweeps" <<'PY' || { echo "FAIL: summary.json"; cat "$work/a/summary.json"; exit 1; }
+python3 - "$work/a/summary.json" "$work/a/metrics.json" "$sweeps" <<'PY' \
+  || { echo "FAIL: summary.json"; cat "$work/a/summary.json"; exit 1; }
 import json, sys
 s, m = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
 assert s["oracle"] is True and s["particles"] == 0 and s["sweeps"] == int(sys.argv[3]), "oracle, no particles"
@@ -34,7 +35,8 @@ sm = s["smoothing"]
 assert sm["contacts_tied"] > 1150 and sm["duplicate_legs"] == 0 and sm["rounds"] >= 1, "smoothing"
 e, o = s["estimated"]["trajectory"], s["odometry"]["trajectory"]
 assert e["poses"] == int(sys.argv[3]), "poses"
-assert 0 < e["ate_rmse_m"] < 0.025 and e["ate_rmse_m"] * 5 < o["ate_rmse_m"], f"ATE {e['ate_rmse_m']} (odometry {o['ate_rmse_m']})"
+assert 0 < e["ate_rmse_m"] < 0.025 and e["ate_rmse_m"] * 5 < o["ate_rmse_m"], \
+    f"ATE {e['ate_rmse_m']} (odometry {o['ate_rmse_m']})"
 assert 0 < e["aligned_rmse_m"] < 0.016, f"aligned ATE {e['aligned_rmse_m']}"
 assert m["precision"] == 1.0 and m["matched"] >= 2, f"map: {m}"
 print(f"oracle on {sys.argv[3]} sweeps: ATE {e['ate_rmse_m']:.3f} m (aligned {e['aligned_rmse_m']:.3f} m), "

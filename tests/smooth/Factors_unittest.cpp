@@ -104,8 +104,9 @@ TEST(TableShapeFactor, HoldsTheLegsDistanceNotTheirDirection)
 	const Eigen::Vector2d da(0.01, -0.02), db(-0.03, 0.005);
 	Eigen::RowVector2d J;
 	f.residual(da, db, &J);
-	const auto n = numeric<2>([&](const Eigen::Vector2d& x) { return Eigen::VectorXd::Constant(1, f.residual(x, db)); }, da);
-	const auto nb = numeric<2>([&](const Eigen::Vector2d& x) { return Eigen::VectorXd::Constant(1, f.residual(da, x)); }, db);
+	const auto one = [](double r) { return Eigen::VectorXd::Constant(1, r); };
+	const auto n = numeric<2>([&](const Eigen::Vector2d& x) { return one(f.residual(x, db)); }, da);
+	const auto nb = numeric<2>([&](const Eigen::Vector2d& x) { return one(f.residual(da, x)); }, db);
 	EXPECT_LT((J - n).cwiseAbs().maxCoeff(), 1e-4 * J.cwiseAbs().maxCoeff());
 	EXPECT_LT((-J - nb).cwiseAbs().maxCoeff(), 1e-4 * J.cwiseAbs().maxCoeff());
 }

@@ -196,7 +196,8 @@ TEST(PathSmoother, ATableKeepsItsShapeAcrossABlindStep)
 	for (size_t i = 0; i < contacts.size(); i += 2)  // [i] the side wall, [i + 1] ahead
 	{
 		const double x = c.truth[contacts[i].sweep][0];
-		const Eigen::Vector2d leg = contacts[i].sweep <= 20 ? Eigen::Vector2d(2.425, -0.1) : Eigen::Vector2d(3.425, -0.7);
+		const Eigen::Vector2d leg =
+			contacts[i].sweep <= 20 ? Eigen::Vector2d(2.425, -0.1) : Eigen::Vector2d(3.425, -0.7);
 		auto& ahead = contacts[i + 1];  // the leg's -x face
 		ahead.p = {leg.x() - 0.025 - x, leg.y()}, ahead.shaft = ahead.p.normalized();
 		baseline::Contact side = ahead;  // its +y face

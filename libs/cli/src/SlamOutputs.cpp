@@ -154,7 +154,8 @@ std::string SlamOutputs::write(OutputDir& out, const TRun& run, const MapOutputs
 		const auto &e = scores->estimated, &d = scores->odometry;
 		std::snprintf(line, sizeof(line), "; ATE RMSE %.3f m (aligned %.3f", e.ate_rmse_m, e.aligned_rmse_m);
 		text += line;
-		if (scores->filter) std::snprintf(line, sizeof(line), "; best particle %.3f", scores->filter->ate_rmse_m), text += line;
+		if (scores->filter)
+			std::snprintf(line, sizeof(line), "; best particle %.3f", scores->filter->ate_rmse_m), text += line;
 		std::snprintf(line, sizeof(line), "), odometry %.3f m (aligned %.3f)", d.ate_rmse_m, d.aligned_rmse_m);
 		text += line;
 	}

@@ -236,7 +236,11 @@ int run(Options& o)
 	MapRunner runner(multimap, *map, 1, [&](size_t i, const Sweep& sw, double ms) { outputs.onStep(i, sw, ms); });
 	world::PathLog::Writer estimatedText(result.estimatedFile, SlamOutputs::ESTIMATED_TITLE);
 	std::optional<world::PathLog::Writer> filterText;
-	if (slam) result.filterFile = out.path(SlamOutputs::FILTER), filterText.emplace(result.filterFile, SlamOutputs::FILTER_TITLE);
+	if (slam)
+	{
+		result.filterFile = out.path(SlamOutputs::FILTER);
+		filterText.emplace(result.filterFile, SlamOutputs::FILTER_TITLE);
+	}
 	estimated.rewind();
 	size_t k = 0;
 	obs::RawlogReader::forEach(o.input, [&](const Sweep& sw) {
@@ -297,9 +301,9 @@ int WhiskerSlamApp::main(int argc, char** argv)
 	app.add_option("--world", o.world, "Ground-truth world .ini: drawn in the pictures, the map scored against it");
 	app.add_option("--sweeps", o.sweeps, "Use only the first N sweeps (0: all)")->capture_default_str();
 	app.add_flag("--oracle", o.oracle,
-				 "No filter: the true path smoothed (one pass) against the --world's legs and walls, the data association "
-				 "and the solids' shapes known; the floor of this estimator on the log (doc/slam.md, \"The floor\"). "
-				 "Writes no filter_path.txt");
+				 "No filter: the true path smoothed (one pass) against the --world's legs and walls, the data "
+				 "association and the solids' shapes known; the floor of this estimator on the log (doc/slam.md, "
+				 "\"The floor\"). Writes no filter_path.txt");
 	app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
 	return runApp(app, argc, argv, "whisker-slam", [&] { return run(o); });
 }

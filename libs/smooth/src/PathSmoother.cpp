@@ -115,7 +115,8 @@ struct Problem
 		{
 			Eigen::RowVector2d J;
 			const double r = f.residual(d[f.a], d[f.b], &J);
-			add(Eigen::Matrix<double, 1, 1>(r), 1, make_pair(groupColumn(f.a), J), make_pair(groupColumn(f.b), Eigen::RowVector2d(-J)));
+			add(Eigen::Matrix<double, 1, 1>(r), 1, make_pair(groupColumn(f.a), J),
+				make_pair(groupColumn(f.b), Eigen::RowVector2d(-J)));
 		}
 		const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
 		for (size_t g = 0; g < groups; g++)
