@@ -16,7 +16,8 @@ namespace whiskermap::smooth
  *  shifts instead: the path's poses (the first fixed: the known start) and a shift per
  *  solid group (each leg alone, the pieces of one straight wall together: WallLines) minimise
  *    sum |odometry residuals|^2 (eq. S2) + sum huber(contact residuals) (eq. S3)
- *      + sum |same-solid residuals|^2 (eqs. S4, S5) + sum |d / solid_sigma|^2,
+ *      + sum |same-solid residuals|^2 (eqs. S4, S5) + sum |d / solid_sigma|^2
+ *      [+ sum (table-shape residuals)^2 (eq. S7, TableShapeFactor; only with table_sigma > 0)],
  *  by Levenberg-Marquardt on the sparse normal equations. Contacts are tied to faces of the
  *  map's solids (ContactFactor::associate) at the start of each round, from the current
  *  estimate; a contact near no face is left out (it belongs to nothing the map holds). Legs
