@@ -10,11 +10,6 @@ namespace whiskermap::smooth
 {
 namespace
 {
-Eigen::Vector2d centre(const world::Obstacle& o)
-{
-	return (o.corners[0] + o.corners[1] + o.corners[2] + o.corners[3]) / 4;
-}
-
 /** A table's legs (indices into the solids, by corner) and its shrunk footprint. */
 struct MappedTable
 {
@@ -38,7 +33,7 @@ std::vector<std::pair<size_t, size_t>> DuplicateLegs::find(
 		if (std::count_if(t.legs.begin(), t.legs.end(), [&](long i) { return touched[static_cast<size_t>(i)]; }) < 3)
 			continue;
 		std::array<Eigen::Vector2d, 4> c;
-		for (size_t k = 0; k < 4; k++) c[k] = centre(solids[static_cast<size_t>(t.legs[k])]);
+		for (size_t k = 0; k < 4; k++) c[k] = solids[static_cast<size_t>(t.legs[k])].centre();
 		t.centre = (c[0] + c[1] + c[2] + c[3]) / 4;
 		// Leg 0 is at +x+y, 1 at -x+y, 2 at -x-y (world::Table).
 		const Eigen::Vector2d along = c[0] - c[1], across = c[1] - c[2];
@@ -56,12 +51,12 @@ std::vector<std::pair<size_t, size_t>> DuplicateLegs::find(
 			if (!A.whole || !B.whole || !A.footprint.intersects(B.footprint)) continue;
 			for (long bi : B.legs)
 			{
-				const Eigen::Vector2d rb = centre(solids[static_cast<size_t>(bi)]) - B.centre;
+				const Eigen::Vector2d rb = solids[static_cast<size_t>(bi)].centre() - B.centre;
 				long best = -1;
 				double bestDistance = INFINITY;
 				for (long ai : A.legs)
 				{
-					const double d = (centre(solids[static_cast<size_t>(ai)]) - A.centre - rb).norm();
+					const double d = (solids[static_cast<size_t>(ai)].centre() - A.centre - rb).norm();
 					if (d < bestDistance) bestDistance = d, best = ai;
 				}
 				add(static_cast<size_t>(best), static_cast<size_t>(bi));
@@ -70,7 +65,7 @@ std::vector<std::pair<size_t, size_t>> DuplicateLegs::find(
 	for (size_t i = 0; i < solids.size(); i++)
 		for (size_t j = i + 1; j < solids.size(); j++)
 			if (solids[i].table >= 0 && solids[j].table >= 0 && solids[i].table != solids[j].table && touched[i] &&
-				touched[j] && (centre(solids[i]) - centre(solids[j])).norm() <= distance)
+				touched[j] && (solids[i].centre() - solids[j].centre()).norm() <= distance)
 				add(i, j);
 	return {pairs.begin(), pairs.end()};
 }

@@ -126,12 +126,6 @@ struct Problem
 	}
 };
 
-Eigen::Vector2d centre(const world::Obstacle& o)
-{
-	const auto& c = o.corners;
-	return (c[0] + c[1] + c[2] + c[3]) / 4;
-}
-
 /** The hypotheses that two mapped solids are one, from the contacts first tied: eq. S4's
  *  factors for the legs the map holds twice, in sets by the two mapped tables they pair (a table
  *  mapped twice), largest first; then eq. S5's for each wall it holds twice, one set each. */
@@ -146,7 +140,7 @@ std::vector<std::vector<SameSolidFactor>> sameSolids(
 	for (const auto& [i, j] : DuplicateLegs::find(solids, touched, params.duplicate_shrink, params.duplicate_distance))
 		if (groupOf[i] != groupOf[j])
 			byTables[std::minmax(solids[i].table, solids[j].table)].push_back(
-				{groupOf[i], groupOf[j], centre(solids[i]) - centre(solids[j]), params.duplicate_sigma});
+				{groupOf[i], groupOf[j], solids[i].centre() - solids[j].centre(), params.duplicate_sigma});
 	std::vector<std::vector<SameSolidFactor>> sets;
 	for (auto& [tables, set] : byTables) sets.push_back(std::move(set));
 	std::stable_sort(sets.begin(), sets.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
@@ -174,7 +168,7 @@ std::vector<TableShapeFactor> tableShapes(
 	for (size_t i = 0; i < solids.size(); i++)
 		for (size_t j = i + 1; j < solids.size(); j++)
 			if (solids[i].table >= 0 && solids[i].table == solids[j].table && groupOf[i] != groupOf[j])
-				shapes.push_back({groupOf[i], groupOf[j], centre(solids[i]) - centre(solids[j]), sigma});
+				shapes.push_back({groupOf[i], groupOf[j], solids[i].centre() - solids[j].centre(), sigma});
 	return shapes;
 }
 

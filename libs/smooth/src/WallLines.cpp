@@ -54,11 +54,9 @@ size_t WallLines::merge(std::vector<world::Obstacle>& solids, std::vector<size_t
 		if (solids[i].table >= 0) continue;
 		const auto angle = direction(solids[i]);
 		if (!angle) continue;
-		const auto& c = solids[i].corners;
 		const double length = longAxis(solids[i]).norm();
 		const Eigen::Vector2d normal(-std::sin(*angle), std::cos(*angle));
-		const Eigen::Vector2d centre = (c[0] + c[1] + c[2] + c[3]) / 4;
-		pieces.push_back({i, *angle, normal, normal.dot(centre), length});
+		pieces.push_back({i, *angle, normal, normal.dot(solids[i].centre()), length});
 	}
 	std::vector<size_t> parent(pieces.size());
 	std::iota(parent.begin(), parent.end(), 0);

@@ -19,6 +19,9 @@ struct Obstacle
 		const Eigen::Vector2d& centre, double yaw, double halfX, double halfY, double texture,
 		int table = -1, int leg = -1);
 
+	/** The mean of the four corners. */
+	Eigen::Vector2d centre() const { return (corners[0] + corners[1] + corners[2] + corners[3]) / 4; }
+
 	/** Outward unit normal of edge k. */
 	Eigen::Vector2d edgeNormal(int k) const;
 
