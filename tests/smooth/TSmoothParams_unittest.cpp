@@ -94,4 +94,5 @@ TEST(TSmoothParams, HundredParticleConfigSmoothsAsTheShippedOne)
 	EXPECT_EQ(s.rounds, t.rounds);
 	EXPECT_EQ(s.iterations, t.iterations);
 	EXPECT_EQ(s.passes, t.passes);
+	EXPECT_EQ(s.table_sigma, t.table_sigma);
 }
