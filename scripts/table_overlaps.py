@@ -58,12 +58,12 @@ def main(paths):
     for path in paths:
         rows = sorted(read(path), key=lambda r: -float(r["contacts"]))
         feet = [footprint(r) for r in rows]
+        gaps = {(i, j): gap(feet[i], feet[j]) for j in range(len(rows)) for i in range(j)}  # once a pair
         pairs = [f"{rows[i]['id']} ({rows[i]['contacts']} contacts) and {rows[j]['id']} ({rows[j]['contacts']}): "
-                 f"depth {max(0.0, -gap(feet[i], feet[j])):.3f} m"
-                 for i in range(len(rows)) for j in range(i + 1, len(rows)) if gap(feet[i], feet[j]) <= 0]
+                 f"depth {max(0.0, -g):.3f} m" for (i, j), g in sorted(gaps.items()) if g <= 0]
         kept, left = [], []
         for i in range(len(rows)):
-            (left if any(gap(feet[i], feet[k]) <= 0 for k in kept) else kept).append(i)
+            (left if any(gaps[k, i] <= 0 for k in kept) else kept).append(i)
         total += len(rows)
         left_total += len(left)
         print(f"{path}: {len(rows)} tables, {len(pairs)} pair(s) overlapping or touching"
