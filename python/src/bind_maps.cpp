@@ -154,6 +154,10 @@ void bindMaps(py::module_& m)
 			[](const Map& mp) { return mp.read([](const CHierarchicalObjectMap& x) { return x.likelihoodOptions.min_support; }); },
 			[](Map& mp, uint32_t v) { mp.write([&](auto&, CHierarchicalObjectMap& x) { return x.likelihoodOptions.min_support = v; }); },
 			"per-pose mode: objects found at fewer poses are left out")
+		.def_property("disjoint_tables",
+			[](const Map& mp) { return mp.read([](const CHierarchicalObjectMap& x) { return x.likelihoodOptions.disjoint_tables; }); },
+			[](Map& mp, bool v) { mp.write([&](auto&, CHierarchicalObjectMap& x) { return x.likelihoodOptions.disjoint_tables = v; }); },
+			"lasting mode: no two mapped tables overlap (eq. 16 made hard; likelihoodOpts disjoint_tables)")
 		.def_property("batch_sweeps",
 			[](const Map& mp) { return mp.read([](const CHierarchicalObjectMap& x) { return x.insertionOptions.lasting.batch_sweeps; }); },
 			[](Map& mp, uint32_t v) {

@@ -156,6 +156,26 @@ def test_sweeps_annealed_in_batches(rawlog):
         m.batch_sweeps = 0
 
 
+def test_disjoint_tables(rawlog):
+    """disjoint_tables: a table overlapping one with more contacts leaves the map for the
+    candidates (early in the arena, with min_existence 0, a table and its mirror image)."""
+    m = wm.Map(mode="lasting", seed=SEED)
+    m.min_existence = 0
+    assert not m.disjoint_tables
+    left = 0
+    for pose, sweep in list(rawlog)[:200]:
+        m.insert(sweep, pose)
+        every = len(m.map_objects())
+        m.disjoint_tables = True
+        kept, candidates = len(m.map_objects()), len(m.candidate_objects())
+        m.disjoint_tables = False
+        assert kept + candidates == every
+        left = max(left, every - kept)
+    assert left > 0
+    m.disjoint_tables = True
+    assert wm.Map.from_bytes(m.to_bytes()).disjoint_tables
+
+
 def test_copies_are_deep(rawlog):
     m = build(rawlog, "lasting", sweeps=slice(0, 100))
     for c in (m.copy(), copy.copy(m), copy.deepcopy(m)):

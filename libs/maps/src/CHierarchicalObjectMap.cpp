@@ -10,6 +10,7 @@
 #include <bitset>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 using whiskermap::maps::CHierarchicalObjectMap;
 using mrpt::maps::CMetricMap;
@@ -51,11 +52,17 @@ std::vector<size_t> CHierarchicalObjectMap::supported() const
 	std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
 		return objects()[a].support > objects()[b].support;
 	});
+	return disjoint(order, [&](size_t i) { return objects()[i].table.footprint(); });
+}
+
+std::vector<size_t> CHierarchicalObjectMap::disjoint(
+	const std::vector<size_t>& order, const std::function<world::Obstacle(size_t)>& footprint)
+{
 	std::vector<size_t> kept;
 	std::vector<world::Obstacle> footprints;
 	for (size_t i : order)
 	{
-		const auto foot = objects()[i].table.footprint();
+		const auto foot = footprint(i);
 		if (std::any_of(footprints.begin(), footprints.end(), [&](const auto& f) { return f.intersects(foot); }))
 			continue;
 		kept.push_back(i);
@@ -86,12 +93,30 @@ TMappedObject CHierarchicalObjectMap::mapped(model::Id t) const
 
 std::vector<TMappedObject> CHierarchicalObjectMap::lastingObjects(bool inMap, bool spreads) const
 {
-	std::vector<TMappedObject> out;
 	const auto& s = m_lasting.state();
+	std::vector<bool> inside(static_cast<size_t>(s.tableIdBound()), false);  // in the map, by table id
+	std::vector<model::Id> ids;  // those tables, in id order
+	for (model::Id t = 0; t < s.tableIdBound(); t++)
+		if (s.hasTable(t) && s.existence(t) >= likelihoodOptions.min_existence)
+			inside[static_cast<size_t>(t)] = true, ids.push_back(t);
+	if (likelihoodOptions.disjoint_tables)
+	{
+		// Eq. 16 made hard: most contacts first (then the more probable, then the older).
+		std::vector<TMappedObject> tables;
+		for (const model::Id t : ids) tables.push_back(mapped(t)), inside[static_cast<size_t>(t)] = false;
+		std::vector<size_t> order(tables.size());
+		for (size_t i = 0; i < order.size(); i++) order[i] = i;
+		std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+			return std::tie(tables[a].contacts, tables[a].existence) > std::tie(tables[b].contacts, tables[b].existence);
+		});
+		for (const size_t i : disjoint(order, [&](size_t k) { return tables[k].table.footprint(); }))
+			inside[static_cast<size_t>(ids[i])] = true;
+	}
+	std::vector<TMappedObject> out;
 	const model::ModelParams noiseModel = modelFor(m_lastNoise);  // as the last insertion scored its contacts
 	for (model::Id t = 0; t < s.tableIdBound(); t++)
 	{
-		if (!s.hasTable(t) || (s.existence(t) >= likelihoodOptions.min_existence) != inMap) continue;
+		if (!s.hasTable(t) || inside[static_cast<size_t>(t)] != inMap) continue;
 		out.push_back(mapped(t));
 		if (!spreads) continue;
 		if (const auto& chain = s.chainSpread(t); chain.known())  // the posterior chain's (posterior_steps)
@@ -147,7 +172,7 @@ const std::vector<world::Obstacle>& CHierarchicalObjectMap::mappedSolids() const
 	const std::lock_guard<std::mutex> lock(c.mutex);
 	const auto& o = likelihoodOptions;
 	if (!c.valid || c.support != o.min_support || c.existence != o.min_existence || c.extension != o.wall_extension ||
-		c.extensionMin != o.wall_extension_min_length)
+		c.extensionMin != o.wall_extension_min_length || c.disjoint != o.disjoint_tables)
 	{
 		c.legs.clear();
 		const auto tables = mapTables();
@@ -166,6 +191,7 @@ const std::vector<world::Obstacle>& CHierarchicalObjectMap::mappedSolids() const
 		c.existence = o.min_existence;
 		c.extension = o.wall_extension;
 		c.extensionMin = o.wall_extension_min_length;
+		c.disjoint = o.disjoint_tables;
 	}
 	return c.legs;
 }

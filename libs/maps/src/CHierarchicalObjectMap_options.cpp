@@ -102,6 +102,7 @@ void CHierarchicalObjectMap::TLikelihoodOptions::loadFromConfigFile(
 		min_support = static_cast<uint32_t>(sec.integer("min_support", min_support, 0, 1000000));
 		wall_extension = sec.number("wall_extension", wall_extension, 0, 100);
 		wall_extension_min_length = sec.number("wall_extension_min_length", wall_extension_min_length, 0, 100);
+		disjoint_tables = sec.boolean("disjoint_tables", disjoint_tables);
 	});
 }
 
@@ -112,7 +113,7 @@ void CHierarchicalObjectMap::TLikelihoodOptions::dumpToTextStream(std::ostream& 
 		<< "\nuse_swept_grid=" << sweep.use_swept_grid << "\ncell_prior=" << sweep.cell_prior
 		<< "\ncell_prior_sweeps=" << sweep.cell_prior_sweeps << "\np_unexplored=" << sweep.p_unexplored
 		<< "\nmin_existence=" << min_existence << "\nmin_support=" << min_support << "\nwall_extension=" << wall_extension
-		<< "\nwall_extension_min_length=" << wall_extension_min_length << "\n";
+		<< "\nwall_extension_min_length=" << wall_extension_min_length << "\ndisjoint_tables=" << disjoint_tables << "\n";
 }
 
 CHierarchicalObjectMap::TMapDefinition::TMapDefinition() = default;

@@ -9,7 +9,8 @@
 // before 11 with every class's legs nominal; versions before 12 with every sweep annealed at
 // once; versions before 13 without the posterior chain's pose spreads (none); versions before
 // 14 without Manhattan walls and with walls as mapped in the likelihood; versions before 15
-// recording every sweep in the swept grid; versions before 16 merging only overlapping legs.
+// recording every sweep in the swept grid; versions before 16 merging only overlapping legs;
+// versions before 17 with eq. 16 soft in the lasting map (disjoint_tables = false).
 #include <mrpt/serialization/CArchive.h>
 #include <whiskermap/maps/CHierarchicalObjectMap.h>
 #include <whiskermap/model/ObjectCatalogue.h>
@@ -318,7 +319,7 @@ void readChainSpreads(CArchive& in, model::LastingState& s)
 }
 }  // namespace
 
-uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 16; }
+uint8_t CHierarchicalObjectMap::serializeGetVersion() const { return 17; }
 
 void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 {
@@ -390,6 +391,8 @@ void CHierarchicalObjectMap::serializeTo(CArchive& out) const
 	out << insertionOptions.record_swept;
 	// Version 16: legs merged within a gap.
 	out << l.leg_merge_gap;
+	// Version 17: no two mapped tables overlapping.
+	out << likelihoodOptions.disjoint_tables;
 }
 
 void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
@@ -413,6 +416,7 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 		case 14:
 		case 15:
 		case 16:
+		case 17:
 		{
 			internal_clear();
 			in >> genericMapParams;
@@ -539,6 +543,8 @@ void CHierarchicalObjectMap::serializeFrom(CArchive& in, uint8_t version)
 				if (!(insertionOptions.lasting.leg_merge_gap >= 0 && insertionOptions.lasting.leg_merge_gap <= 1))
 					THROW_EXCEPTION("CHierarchicalObjectMap: corrupt options (leg_merge_gap not a number in [0, 1] m)");
 			}
+			likelihoodOptions.disjoint_tables = false;  // versions before 17: eq. 16 soft in the lasting map
+			if (version >= 17) in >> likelihoodOptions.disjoint_tables;
 			if (!(m.sigma_corner > 0) || !std::isfinite(m.sigma_corner))
 				THROW_EXCEPTION("CHierarchicalObjectMap: corrupt model (sigma_corner not a positive number)");
 			m_consolidator.setObjects(std::move(objs));

@@ -15,6 +15,7 @@
 #include <whiskermap/model/ModelParams.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <mutex>
 
@@ -86,6 +87,10 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 		 *  one is predicted on its line, not unexplained); 0: walls as mapped. */
 		double wall_extension = 0;
 		double wall_extension_min_length = 0.2;  ///< metres: shorter walls (a leg's face) keep their length
+		/** Lasting mode: no two mapped tables overlap or touch (eq. 16 made hard, the per-pose
+		 *  map's rule): taken most contacts first, a table whose footprint meets one already
+		 *  taken is a candidate instead. Off: eq. 16 stays the model's soft factor. */
+		bool disjoint_tables = false;
 		void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
 		void dumpToTextStream(std::ostream& out) const override;
 	};
@@ -108,15 +113,17 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 
 	bool lasting() const { return insertionOptions.mode == TInsertionOptions::TMode::Lasting; }
 
-	/** The map: lasting mode, the tables with existence >= min_existence; per-pose mode, the
+	/** The map: lasting mode, the tables with existence >= min_existence (with
+	 *  disjoint_tables, none overlapping one with more contacts); per-pose mode, the
 	 *  consolidated objects with support >= min_support, best supported first, leaving out
 	 *  any that overlaps one already taken (eq. 16). What the likelihood, the pictures, the
 	 *  exports and the evaluation use, and what map_tables.csv holds. With `spreads` (lasting
 	 *  mode only), each with its pose spread (LastingMap::poseSpread, seeded with its row:
 	 *  a short chain each, as map_tables.csv reports it). */
 	std::vector<TMappedObject> mapObjects(bool spreads = false) const;
-	/** Everything else the map considered: tables below min_existence, objects below
-	 *  min_support or overlapping a better one (map_candidates.csv); `spreads` as above. */
+	/** Everything else the map considered: tables below min_existence (or left out by
+	 *  disjoint_tables), objects below min_support or overlapping a better one
+	 *  (map_candidates.csv); `spreads` as above. */
 	std::vector<TMappedObject> candidateObjects(bool spreads = false) const;
 	/** Lasting mode with the model's walls: the walls with existence >= min_existence
 	 *  (map_walls.csv); empty otherwise. */
@@ -220,6 +227,7 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 		uint32_t support = 0;  ///< the thresholds the legs were selected with
 		double existence = -1;
 		double extension = -1, extensionMin = -1;  ///< and the walls lengthened with
+		bool disjoint = false;
 		std::mutex mutex;
 		LegCache() = default;
 		LegCache(const LegCache&) {}
@@ -246,8 +254,13 @@ class CHierarchicalObjectMap : public mrpt::maps::CMetricMap
 	/** A consolidated object (per-pose mode) or a lasting table, as written out. */
 	TMappedObject mapped(const TMapObject& o) const;
 	TMappedObject mapped(model::Id table) const;
-	/** The lasting tables whose existence is at least min_existence (`inMap`) or below it, in
-	 *  store order, with their pose spreads if asked for. */
+	/** Of the items `order` lists (best first), those whose footprint meets none kept before
+	 *  (eq. 16 made hard), in that order. */
+	static std::vector<size_t> disjoint(
+		const std::vector<size_t>& order, const std::function<world::Obstacle(size_t)>& footprint);
+	/** The lasting tables in the map (`inMap`: existence at least min_existence and, with
+	 *  disjoint_tables, kept by that rule) or not, in store order, with their pose spreads if
+	 *  asked for. */
 	std::vector<TMappedObject> lastingObjects(bool inMap, bool spreads) const;
 
 	MAP_DEFINITION_START(CHierarchicalObjectMap)
