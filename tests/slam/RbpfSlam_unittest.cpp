@@ -81,6 +81,8 @@ TEST(TSlamParams, HundredParticleConfigDiffersOnlyInCountAndBatch)
 	EXPECT_EQ(a.wall_axis, b.wall_axis);
 	EXPECT_EQ(a.wall_extension, b.wall_extension);
 	EXPECT_EQ(a.leg_merge_gap, b.leg_merge_gap);
+	EXPECT_TRUE(a.disjoint_tables);
+	EXPECT_EQ(a.disjoint_tables, b.disjoint_tables);
 	EXPECT_EQ(a.resample_ess, b.resample_ess);
 	EXPECT_EQ(a.resampling, b.resampling);
 }
@@ -108,6 +110,9 @@ TEST_F(TSlamParamsTest, StrictKeysAndValues)
 	EXPECT_EQ(slam::TSlamParams::load(ini("[slam]\nleg_merge_gap = 0.02\n")).leg_merge_gap, 0.02);
 	EXPECT_EQ(slam::TSlamParams::load(ini("[slam]\n")).leg_merge_gap, 0);
 	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\nleg_merge_gap = 2\n")), core::Error);
+	EXPECT_TRUE(slam::TSlamParams::load(ini("[slam]\ndisjoint_tables = true\n")).disjoint_tables);
+	EXPECT_FALSE(slam::TSlamParams::load(ini("[slam]\n")).disjoint_tables);
+	EXPECT_THROW(slam::TSlamParams::load(ini("[slam]\ndisjoint_tables = 2\n")), core::Error);
 	EXPECT_THROW(slam::TSlamParams::load(path("missing.ini")), core::Error);
 	// Exact odometry needs no [motion_model] (its matched model has zero noise); a noisy file
 	// without one is refused.

@@ -5,7 +5,7 @@
 # margin, and smoothing the best particle's path beats that path; the same seed gives the same
 # bytes, in either rawlog layout; without smoothing the map it writes is the best particle's
 # own; particles that merge legs within a gap hold fewer legs beside another and are smoothed
-# as well. HEAP: `measured`, or `unmeasured` in a build with AddressSanitizer (summary.json's
+# as well; disjoint_tables changes the map written, not the paths. HEAP: `measured`, or `unmeasured` in a build with AddressSanitizer (summary.json's
 # live heap is then null).
 set -euo pipefail
 trap 'echo "FAIL: line $LINENO: $BASH_COMMAND (exit $?)"' ERR
@@ -104,6 +104,21 @@ PY
 est_g=$(ate "$work/g/estimated_path.txt")
 echo "leg_merge_gap 0.02: SLAM $est_g m"
 awk -v e="$est_g" 'BEGIN { exit !(e > 0 && e < 0.04) }' || { echo "FAIL: leg_merge_gap: smoothed ATE $est_g m"; exit 1; }
+
+# [slam] disjoint_tables (shipped true) holds for the map written only: without it the
+# particles and the smoother run the same (the same filter and estimated paths), and the map
+# written with it holds no two tables that overlap (scripts/table_overlaps.py).
+sed -e 's#^map_config = .*#map_config = '"$src"'/config/whisker-map.ini#' \
+  -e 's#^disjoint_tables = true #disjoint_tables = false #' "$src/config/whisker-slam.ini" > "$work/soft.ini"
+grep -q '^disjoint_tables = false ' "$work/soft.ini" || { echo "FAIL: the shipped config has no disjoint_tables = true"; exit 1; }
+"$slam" -q -c "$work/soft.ini" -i "${data}_obs.rawlog" -o "$work/s" --particles $particles --sweeps $sweeps --seed 7
+python3 -c 'import json, sys; a, s = (json.load(open(f)) for f in sys.argv[1:]); assert a["disjoint_tables"] and not s["disjoint_tables"]' \
+  "$work/a/summary.json" "$work/s/summary.json" || { echo "FAIL: disjoint_tables in summary.json"; exit 1; }
+for f in filter_path.txt estimated_path.txt; do
+  cmp "$work/a/$f" "$work/s/$f" || { echo "FAIL: disjoint_tables changed $f (it is for the map written only)"; exit 1; }
+done
+python3 "$src/scripts/table_overlaps.py" "$work/a/map_tables.csv" | grep -q '^total: [1-9][0-9]* tables, 0 left out$' ||
+  { echo "FAIL: map_tables.csv: no tables, or two overlapping"; exit 1; }
 
 # Same seed, same bytes.
 "$slam" -q -i "${data}_obs.rawlog" -o "$work/b" --world "$world" --particles $particles --sweeps $sweeps --seed 7

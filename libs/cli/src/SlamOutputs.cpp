@@ -87,6 +87,7 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 		{"max", st.maxMs}};
 	j["proposal_samples"] = p.proposal_samples, j["batch_sweeps"] = p.batch_sweeps;
 	j["manhattan_walls"] = p.manhattan_walls, j["wall_extension"] = p.wall_extension, j["leg_merge_gap"] = p.leg_merge_gap;
+	j["disjoint_tables"] = p.disjoint_tables;
 	j["resample_ess"] = p.resample_ess, j["resamplings"] = st.resamplings, j["ess_min"] = st.minEss;
 	j["ess_stride"] = st.ess.stride();
 	j["ess"] = std::move(ess);

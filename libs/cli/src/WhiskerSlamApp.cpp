@@ -259,6 +259,7 @@ int run(Options& o)
 	estimatedText.close();
 	if (filterText) filterText->close();
 	if (!smoothed) result.mapMatches = sameTables(map->mapTables(), slam->bestMap().mapTables());
+	if (params.disjoint_tables) map->likelihoodOptions.disjoint_tables = true;  // the map written only
 	map->annealPending();  // the last sweeps of a batch (batch_sweeps): the particle's own map has them pending
 	result.mapTables = map->mapTables();
 	if (result.mapMatches == false && !o.quiet)

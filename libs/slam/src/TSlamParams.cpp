@@ -54,6 +54,7 @@ TSlamParams TSlamParams::load(const std::string& path)
 	p.wall_axis = core::deg2rad(sec.number("wall_axis_deg", core::rad2deg(p.wall_axis), -90, 90));
 	p.wall_extension = sec.number("wall_extension", p.wall_extension, 0, 100);
 	p.leg_merge_gap = sec.number("leg_merge_gap", p.leg_merge_gap, 0, 1);
+	p.disjoint_tables = sec.boolean("disjoint_tables", p.disjoint_tables);
 	p.resample_ess = sec.number("resample_ess", p.resample_ess, 0, 1);
 	const std::map<std::string, PF::TParticleResamplingAlgorithm> methods = {
 		{"multinomial", PF::prMultinomial}, {"residual", PF::prResidual},

@@ -33,6 +33,10 @@ struct TSlamParams
 	 *  filter keep the map config's own, so the smoother finds the legs mapped twice; 0: the
 	 *  map config's own). */
 	double leg_merge_gap = 0;
+	/** The map written (not the particles' nor the smoother's: eq. S4 needs the tables mapped
+	 *  twice) maps no two tables that overlap or touch (its likelihoodOpts disjoint_tables);
+	 *  off: the map config's own. */
+	bool disjoint_tables = false;
 	double resample_ess = 0.5;  ///< resample when the normalised effective sample size drops below this
 	mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling =
 		mrpt::bayes::CParticleFilter::prSystematic;
