@@ -74,8 +74,10 @@ TEST_F(TSmoothParamsTest, BadValuesAndUnknownKeysNameTheFileAndKey)
 	EXPECT_THROW(smooth::TSmoothParams::load(path("missing.ini")), core::Error);
 }
 
-// config/whisker-slam-100.ini (100 particles in batches of 4) smooths as config/whisker-slam.ini.
-TEST(TSmoothParams, HundredParticleConfigSmoothsAsTheShippedOne)
+// config/whisker-slam-100.ini (100 particles in batches of 4) smooths as config/whisker-slam.ini,
+// but with eq. S7 on (doc/slam.md, "Tables keep their shape": with 30 particles it costs map
+// F1 on random_yaw1).
+TEST(TSmoothParams, HundredParticleConfigSmoothsAsTheShippedOneWithTheTablesShapes)
 {
 	const std::string src = WHISKERMAP_SOURCE_DIR;
 	const auto s = smooth::TSmoothParams::load(src + "/config/whisker-slam.ini");
@@ -94,5 +96,6 @@ TEST(TSmoothParams, HundredParticleConfigSmoothsAsTheShippedOne)
 	EXPECT_EQ(s.rounds, t.rounds);
 	EXPECT_EQ(s.iterations, t.iterations);
 	EXPECT_EQ(s.passes, t.passes);
-	EXPECT_EQ(s.table_sigma, t.table_sigma);
+	EXPECT_EQ(s.table_sigma, 0);
+	EXPECT_EQ(t.table_sigma, 0.005);
 }
