@@ -158,7 +158,8 @@ def test_sweeps_annealed_in_batches(rawlog):
 
 def test_disjoint_tables(rawlog):
     """disjoint_tables: a table overlapping one with more contacts leaves the map for the
-    candidates (early in the arena, with min_existence 0, a table and its mirror image)."""
+    candidates (early in the arena, with min_existence 0, a two-legged hypothesis beside a
+    true table)."""
     m = wm.Map(mode="lasting", seed=SEED)
     m.min_existence = 0
     assert not m.disjoint_tables

@@ -564,8 +564,8 @@ size_t overlappingPairs(const std::vector<maps::TMappedObject>& objects)
 }  // namespace
 
 // likelihoodOpts disjoint_tables: eq. 16 made hard in the lasting map. Early in the paper
-// arena, with min_existence 0, the map holds tables that overlap (a table and its mirror image
-// on the two legs seen); with the rule, no two overlap, the one with the most contacts stays,
+// arena, with min_existence 0, the map holds every hypothesis, and some overlap (a two-legged
+// one beside a true table); with the rule, no two overlap, the one with the most contacts stays,
 // every one left out overlaps one kept with at least as many contacts and is a candidate, and
 // the likelihood's solids follow the option both ways.
 TEST(CHierarchicalObjectMap, DisjointTablesKeepsTheBetterOfOverlappingTables)
