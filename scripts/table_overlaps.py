@@ -7,8 +7,10 @@ Per map_tables.csv (doc/file-formats.md): every pair of mapped tables whose foot
 x width at x, y, yaw) overlap or touch, with the depth of the overlap (metres along the axis
 that separates them least; 0: touching), then what eq. 16 made hard would keep: the tables
 taken best supported first (most contacts), each one that overlaps or touches a table already
-taken left out, as the per-pose map's rule does (doc/map-plugin.md). Prints one line per file
-and a total. A diagnostic: the lasting map itself keeps eq. 16 soft (a factor epsilon).
+taken left out, as the per-pose map's rule and the lasting map's likelihoodOpts
+`disjoint_tables` do (doc/map-plugin.md). Prints one line per file and a total. A diagnostic
+that needs no build: its footprints leave out the leg width the map's include, so a map written
+with `disjoint_tables` always shows "0 left out" here.
 """
 import csv
 import math

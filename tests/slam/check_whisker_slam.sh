@@ -5,8 +5,8 @@
 # margin, and smoothing the best particle's path beats that path; the same seed gives the same
 # bytes, in either rawlog layout; without smoothing the map it writes is the best particle's
 # own; particles that merge legs within a gap hold fewer legs beside another and are smoothed
-# as well; disjoint_tables changes the map written, not the paths. HEAP: `measured`, or `unmeasured` in a build with AddressSanitizer (summary.json's
-# live heap is then null).
+# as well; disjoint_tables changes the map written, not the paths. HEAP: `measured`, or
+# `unmeasured` in a build with AddressSanitizer (summary.json's live heap is then null).
 set -euo pipefail
 trap 'echo "FAIL: line $LINENO: $BASH_COMMAND (exit $?)"' ERR
 slam=$1 eval=$2 src=$3 work=$4 heap=$5

@@ -95,15 +95,16 @@ std::vector<TMappedObject> CHierarchicalObjectMap::lastingObjects(bool inMap, bo
 {
 	const auto& s = m_lasting.state();
 	std::vector<bool> inside(static_cast<size_t>(s.tableIdBound()), false);  // in the map, by table id
-	std::vector<model::Id> ids;  // those tables, in id order
 	for (model::Id t = 0; t < s.tableIdBound(); t++)
-		if (s.hasTable(t) && s.existence(t) >= likelihoodOptions.min_existence)
-			inside[static_cast<size_t>(t)] = true, ids.push_back(t);
+		inside[static_cast<size_t>(t)] = s.hasTable(t) && s.existence(t) >= likelihoodOptions.min_existence;
 	if (likelihoodOptions.disjoint_tables)
 	{
 		// Eq. 16 made hard: most contacts first (then the more probable, then the older).
+		std::vector<model::Id> ids;  // the tables above min_existence, in id order
 		std::vector<TMappedObject> tables;
-		for (const model::Id t : ids) tables.push_back(mapped(t)), inside[static_cast<size_t>(t)] = false;
+		for (model::Id t = 0; t < s.tableIdBound(); t++)
+			if (inside[static_cast<size_t>(t)])
+				ids.push_back(t), tables.push_back(mapped(t)), inside[static_cast<size_t>(t)] = false;
 		std::vector<size_t> order(tables.size());
 		for (size_t i = 0; i < order.size(); i++) order[i] = i;
 		std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
