@@ -295,3 +295,51 @@ TEST(PathSmoother, OdometryToldExactIsKept)
 	EXPECT_EQ(r.rounds, 0u);
 	EXPECT_LT(Corridor::worst(r.path, c.odometry), 1e-12);
 }
+
+TEST(PathSmoother, AStretchLockedOntoTheWrongLegsIsBridged)
+{
+	// A row of posts 0.5 m apart, 0.4 m to the left of a robot driving 5 m along +x; each sweep
+	// touches the next post ahead twice: its near face (x) and its bottom face (y). The start
+	// path (a filter's) is the truth but for sweeps 40-60, locked one post ahead: every
+	// contact there ties to the wrong post exactly, and only the odometry says otherwise.
+	const size_t n = 101;
+	PathSmoother::TInput in;
+	std::vector<Eigen::Vector3d> truth;
+	for (int k = 0; k < 12; k++)
+		in.solids.push_back(world::Obstacle::rectangle({0.5 * k + 0.25, 0.4}, 0, 0.025, 0.025, 0.5, k, 0));
+	for (size_t i = 0; i < n; i++)
+	{
+		const double x = 0.05 * static_cast<double>(i);
+		truth.emplace_back(x, 0, 0);
+		in.increments.emplace_back(i ? 0.05 : 0, 0, 0);
+		in.covariances.push_back(Eigen::Vector3d(1e-4, 1e-4, 1e-4).asDiagonal());
+		const double post = 0.5 * std::ceil((x + 0.075 - 0.25) / 0.5) + 0.25;  // the next post whose face is 5 cm ahead
+		baseline::Contact face, bottom;
+		face.p = {post - 0.025 - x, 0.4}, face.normal = M_PI;
+		bottom.p = {post - x, 0.375}, bottom.normal = -M_PI / 2;
+		for (auto* c : {&face, &bottom})
+			c->shaft = c->p.normalized(), c->sigma_r = 0.002, c->sweep = static_cast<uint32_t>(i), in.contacts.push_back(*c);
+		const double locked = 0.1 * static_cast<double>(std::clamp<long>(static_cast<long>(i) - 35, 0, 5) -
+														std::clamp<long>(static_cast<long>(i) - 60, 0, 5));
+		in.path.emplace_back(x + locked, 0, 0);
+	}
+	ASSERT_NEAR(Corridor::worst(in.path, truth), 0.5, 1e-9);
+	smooth::TSmoothParams p;
+	p.bridge_gate = 0;
+	const auto refined = PathSmoother::run(in, p);
+	EXPECT_GT(Corridor::worst(refined.path, truth), 0.2);  // the smoother alone keeps the lock
+	EXPECT_EQ(refined.bridges, 0u);
+	EXPECT_GT(refined.strayMax, 5);
+	p.bridge_gate = 5;
+	const auto bridged = PathSmoother::run(in, p);
+	EXPECT_GE(bridged.bridges, 1u);
+	EXPECT_GE(bridged.bridgesTried, bridged.bridges);
+	EXPECT_EQ(bridged.tied, in.contacts.size());
+	EXPECT_LT(Corridor::worst(bridged.path, truth), 0.002);
+	EXPECT_LT(bridged.strayMax, 1e-3);  // the truth is the odometry's chain here
+	// From the truth nothing strays: nothing is tried, and the path stays.
+	in.path = truth;
+	const auto kept = PathSmoother::run(in, p);
+	EXPECT_EQ(kept.bridgesTried, 0u);
+	EXPECT_LT(Corridor::worst(kept.path, truth), 1e-6);
+}

@@ -31,7 +31,8 @@ TEST_F(TSmoothParamsTest, DefaultsWithoutTheSectionAndEveryKeyRead)
 	const auto p = smooth::TSmoothParams::load(ini(
 		"[smooth]\nenabled = false\ngate = 0.1\nnormal_gate_deg = 30\nposition_floor = 0.003\nhuber = 1.5\n"
 		"solid_sigma = 2\nrounds = 3\niterations = 7\npasses = 2\nduplicate_sigma = 0.01\nduplicate_shrink = 0.2\n"
-		"duplicate_distance = 0.05\nduplicate_wall_distance = 0.2\ntable_sigma = 0.004\n"));
+		"duplicate_distance = 0.05\nduplicate_wall_distance = 0.2\ntable_sigma = 0.004\n"
+		"bridge_gate = 6\nbridge_window = 30\n"));
 	EXPECT_FALSE(p.enabled);
 	EXPECT_DOUBLE_EQ(p.gate, 0.1);
 	EXPECT_NEAR(p.normal_gate, M_PI / 6, 1e-12);
@@ -47,6 +48,10 @@ TEST_F(TSmoothParamsTest, DefaultsWithoutTheSectionAndEveryKeyRead)
 	EXPECT_DOUBLE_EQ(p.duplicate_wall_distance, 0.2);
 	EXPECT_DOUBLE_EQ(p.table_sigma, 0.004);
 	EXPECT_EQ(d.table_sigma, 0);  // off unless asked for
+	EXPECT_DOUBLE_EQ(p.bridge_gate, 6);
+	EXPECT_EQ(p.bridge_window, 30u);
+	EXPECT_DOUBLE_EQ(d.bridge_gate, 5);  // on unless turned off
+	EXPECT_EQ(d.bridge_window, 40u);
 }
 
 TEST_F(TSmoothParamsTest, BadValuesAndUnknownKeysNameTheFileAndKey)
@@ -71,6 +76,8 @@ TEST_F(TSmoothParamsTest, BadValuesAndUnknownKeysNameTheFileAndKey)
 	}
 	EXPECT_THROW(smooth::TSmoothParams::load(ini("[smooth]\npasses = 0\n")), core::Error);
 	EXPECT_THROW(smooth::TSmoothParams::load(ini("[smooth]\ntable_sigma = -0.01\n")), core::Error);
+	EXPECT_THROW(smooth::TSmoothParams::load(ini("[smooth]\nbridge_gate = -1\n")), core::Error);
+	EXPECT_THROW(smooth::TSmoothParams::load(ini("[smooth]\nbridge_window = 0\n")), core::Error);
 	EXPECT_THROW(smooth::TSmoothParams::load(path("missing.ini")), core::Error);
 }
 
@@ -96,6 +103,8 @@ TEST(TSmoothParams, HundredParticleConfigSmoothsAsTheShippedOneWithTheTablesShap
 	EXPECT_EQ(s.rounds, t.rounds);
 	EXPECT_EQ(s.iterations, t.iterations);
 	EXPECT_EQ(s.passes, t.passes);
+	EXPECT_EQ(s.bridge_gate, t.bridge_gate);
+	EXPECT_EQ(s.bridge_window, t.bridge_window);
 	EXPECT_EQ(s.table_sigma, 0);
 	EXPECT_EQ(t.table_sigma, 0.005);
 }

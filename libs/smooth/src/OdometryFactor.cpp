@@ -7,11 +7,11 @@
 
 namespace whiskermap::smooth
 {
-OdometryFactor::OdometryFactor(const Eigen::Vector3d& increment, const Eigen::Matrix3d& covariance) : u(increment)
+OdometryFactor::OdometryFactor(const Eigen::Vector3d& increment, const Eigen::Matrix3d& c) : u(increment)
 {
 	const Eigen::Vector3d floor(1e-4, 1e-4, core::deg2rad(0.01));
-	const Eigen::Matrix3d c = covariance + Eigen::Matrix3d(floor.cwiseProduct(floor).asDiagonal());
-	sqrtInfo = c.inverse().llt().matrixU();
+	covariance = c + Eigen::Matrix3d(floor.cwiseProduct(floor).asDiagonal());
+	sqrtInfo = covariance.inverse().llt().matrixU();
 }
 
 Eigen::Vector3d OdometryFactor::end(const Eigen::Vector3d& a) const

@@ -3,6 +3,7 @@
 #include <whiskermap/smooth/ContactFactor.h>
 #include <whiskermap/smooth/DuplicateLegs.h>
 #include <whiskermap/smooth/DuplicateWalls.h>
+#include <whiskermap/smooth/OdometryBridge.h>
 #include <whiskermap/smooth/OdometryFactor.h>
 #include <whiskermap/smooth/PathSmoother.h>
 #include <whiskermap/smooth/SameSolidFactor.h>
@@ -326,10 +327,38 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 		if (with <= without)  // eq. S6
 			x = std::move(y), out = r, ties = std::move(trialTies), held = std::move(trial);
 	}
+	// Stretches where the solution strays from the odometry (a filter locked onto the wrong
+	// legs for a while): each solved again from the odometry's path across it, with the pairs
+	// held, and kept when it costs less over every contact either tied (eq. S8); after a kept
+	// one, the strays are found again (at most as many times as there were strays at first).
+	pb.same = held;
+	const auto strays = [&] { return OdometryBridge::strays(x.path, odometry, params.bridge_window, params.bridge_gate); };
+	const size_t most = params.bridge_gate > 0 ? strays().size() : 0;
+	for (bool kept = most > 0; kept && out.bridges < most;)
+	{
+		kept = false;
+		for (const auto& s : OdometryBridge::candidates(strays(), params.bridge_window, n))
+		{
+			TResult r = out;
+			State y = solve(pb, State{OdometryBridge::bridge(x.path, odometry, s), x.shifts}, in, solids, params, r);
+			auto bridgeTies = pb.contacts;
+			const double with = unionCost(pb, y, ties, in.contacts.size(), params.gate);
+			pb.contacts = ties;
+			const double without = unionCost(pb, x, bridgeTies, in.contacts.size(), params.gate);
+			out.bridgesTried++;
+			if (with < without)
+			{
+				r.bridgesTried = out.bridgesTried, r.bridges = out.bridges + 1;
+				x = std::move(y), out = r, ties = std::move(bridgeTies), kept = true;
+				break;
+			}
+		}
+	}
 	for (const auto& f : held) (f.dof() < 2 ? out.duplicateWalls : out.duplicates)++;
 	for (const auto& set : sets)
 		for (const auto& f : set) (f.dof() < 2 ? out.duplicateWallsApart : out.duplicatesApart)++;
 	out.duplicatesApart -= out.duplicates, out.duplicateWallsApart -= out.duplicateWalls;
+	out.strayMax = OdometryBridge::worst(x.path, odometry, params.bridge_window);
 	pb.same = std::move(held), pb.contacts = startTies;
 	out.costBefore = pb.cost(start);  // with the first round's ties and the pairs kept
 	return finish(std::move(x));

@@ -9,6 +9,7 @@ namespace whiskermap::smooth
 struct OdometryFactor
 {
 	Eigen::Vector3d u{0, 0, 0};
+	Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();  ///< C, with the floor below
 	Eigen::Matrix3d sqrtInfo = Eigen::Matrix3d::Identity();  ///< S
 
 	/** From the increment and its covariance (a floor of 0.1 mm and 0.01 degree keeps an exact

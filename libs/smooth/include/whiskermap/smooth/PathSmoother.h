@@ -47,6 +47,9 @@ class PathSmoother
 		size_t duplicatesApart = 0;  ///< pairs found but left apart: holding them cost more (eq. S6)
 		size_t duplicateWalls = 0;  ///< pairs of wall groups held to one line (eq. S5; DuplicateWalls)
 		size_t duplicateWallsApart = 0;  ///< wall pairs found but left apart (eq. S6)
+		size_t bridges = 0;  ///< stray stretches solved again from the odometry and kept (eq. S8; OdometryBridge)
+		size_t bridgesTried = 0;  ///< of those tried
+		double strayMax = 0;  ///< the result's largest m over a window of bridge_window sweeps (eq. S8)
 		size_t tied = 0;  ///< contacts tied to a face in the last round (of contacts.size())
 		double costBefore = 0, costAfter = 0;  ///< the objective at the start path (first round's ties) and at the end
 		unsigned rounds = 0, iterations = 0;

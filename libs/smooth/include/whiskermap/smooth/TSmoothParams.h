@@ -31,6 +31,11 @@ struct TSmoothParams
 	/** Metres: std-dev of eq. S7, which keeps the distance between two legs of one mapped table
 	 *  (TableShapeFactor; 0: each leg free). */
 	double table_sigma = 0;
+	/** Std-devs: a window of `bridge_window` sweeps over which the smoothed path's motion
+	 *  differs from the odometry's by more than this is a stray stretch, which the smoother
+	 *  solves again from the odometry's own path across it (eq. S8, OdometryBridge; 0: never). */
+	double bridge_gate = 5;
+	unsigned bridge_window = 40;  ///< sweeps: the window of eq. S8
 	unsigned rounds = 6;  ///< association rounds (each re-ties the contacts, then solves)
 	unsigned iterations = 10;  ///< Levenberg-Marquardt iterations per round, at most
 	/** Smoothing passes: the first against the best particle's map, each further one against
