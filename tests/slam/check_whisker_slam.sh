@@ -47,8 +47,9 @@ sm = s["smoothing"]
 assert s["map_matches_best_particle"] is None, "map_matches_best_particle (smoothed)"
 assert sm["contacts_tied"] > 100 and 0 < sm["cost_after"] < sm["cost_before"], "smoothing"
 assert sm["rounds"] >= 1 and sm["iterations"] >= 1 and sm["seconds"] > 0, "smoothing"
-for k in ("duplicate_legs", "duplicate_legs_apart", "duplicate_walls", "duplicate_walls_apart"):
+for k in ("duplicate_legs", "duplicate_legs_apart", "duplicate_walls", "duplicate_walls_apart", "bridges", "bridges_tried"):
     assert isinstance(sm[k], int) and sm[k] >= 0, f"smoothing: {k}"
+assert sm["bridges"] <= sm["bridges_tried"] and sm["stray_max"] >= 0, "smoothing: bridges (eq. S8)"
 m = s["filter_peak_rss_mb"]  # a high-water mark: it can only grow, and the outputs come after
 assert 0 < m["first_tenth"] <= m["end"] <= s["peak_rss_mb"], "filter_peak_rss_mb"
 h = s["filter_heap_mb"]  # live heap at the same points: part of the resident memory, never all of it

@@ -70,6 +70,7 @@ smooth::PathSmoother::TResult SlamSmoothing::run(
 		result = smooth::PathSmoother::run(in, params);
 		result.costBefore = before.costBefore;  // at the particle's path
 		result.rounds += before.rounds, result.iterations += before.iterations;
+		result.bridges += before.bridges, result.bridgesTried += before.bridgesTried;
 	}
 	return result;
 }
