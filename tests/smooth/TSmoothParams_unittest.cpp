@@ -78,6 +78,7 @@ TEST_F(TSmoothParamsTest, BadValuesAndUnknownKeysNameTheFileAndKey)
 	EXPECT_THROW(smooth::TSmoothParams::load(ini("[smooth]\ntable_sigma = -0.01\n")), core::Error);
 	EXPECT_THROW(smooth::TSmoothParams::load(ini("[smooth]\nbridge_gate = -1\n")), core::Error);
 	EXPECT_THROW(smooth::TSmoothParams::load(ini("[smooth]\nbridge_window = 0\n")), core::Error);
+	EXPECT_THROW(smooth::TSmoothParams::load(ini("[smooth]\nbridge_window = 1001\n")), core::Error);
 	EXPECT_THROW(smooth::TSmoothParams::load(path("missing.ini")), core::Error);
 }
 

@@ -22,7 +22,7 @@ TSmoothParams TSmoothParams::load(const std::string& path)
 	p.solid_sigma = sec.number("solid_sigma", p.solid_sigma, 1e-3, 1000);
 	p.table_sigma = sec.number("table_sigma", p.table_sigma, 0, 10);
 	p.bridge_gate = sec.number("bridge_gate", p.bridge_gate, 0, 1000);
-	p.bridge_window = static_cast<unsigned>(sec.integer("bridge_window", p.bridge_window, 1, 100000));
+	p.bridge_window = static_cast<unsigned>(sec.integer("bridge_window", p.bridge_window, 1, 1000));
 	p.rounds = static_cast<unsigned>(sec.integer("rounds", p.rounds, 1, 100));
 	p.iterations = static_cast<unsigned>(sec.integer("iterations", p.iterations, 1, 1000));
 	p.passes = static_cast<unsigned>(sec.integer("passes", p.passes, 1, 100));
