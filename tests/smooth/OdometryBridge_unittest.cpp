@@ -28,18 +28,18 @@ struct Straight
 TEST(OdometryBridge, StraysAreWhereThePathLeavesItsOdometry)
 {
 	Straight s;
-	EXPECT_TRUE(OdometryBridge::strays(s.chain, s.odometry, 40, 5).empty());
-	EXPECT_LT(OdometryBridge::worst(s.chain, s.odometry, 40), 1e-9);
+	EXPECT_TRUE(OdometryBridge::strays(OdometryBridge::distances(s.chain, s.odometry, 40), 40, 5).empty());
+	EXPECT_LT(OdometryBridge::worst(OdometryBridge::distances(s.chain, s.odometry, 40)), 1e-9);
 	// A path that takes 1 m sideways over sweeps 30-35 and comes back over 160-165 (a filter
 	// locked onto a leg a table's width away): each move strays, and between them the path
 	// follows the odometry, shifted.
 	auto bent = s.chain;
 	for (size_t i = 30; i < 200; i++)
 		bent[i].y() += 0.2 * static_cast<double>(std::min<size_t>(i - 30, 5) - std::min<size_t>(i > 160 ? i - 160 : 0, 5));
-	const auto strays = OdometryBridge::strays(bent, s.odometry, 40, 5);
+	const auto strays = OdometryBridge::strays(OdometryBridge::distances(bent, s.odometry, 40), 40, 5);
 	ASSERT_EQ(strays.size(), 2u);
-	EXPECT_GT(OdometryBridge::worst(bent, s.odometry, 40), 5);
-	EXPECT_EQ(OdometryBridge::worst(bent, s.odometry, 200), 0);  // no window fits
+	EXPECT_GT(OdometryBridge::worst(OdometryBridge::distances(bent, s.odometry, 40)), 5);
+	EXPECT_EQ(OdometryBridge::worst(OdometryBridge::distances(bent, s.odometry, 200)), 0);  // no window fits
 	EXPECT_LE(strays[0].first, 30u);
 	EXPECT_GE(strays[0].second, 35u);
 	EXPECT_LT(strays[0].second, 160u);
@@ -49,8 +49,8 @@ TEST(OdometryBridge, StraysAreWhereThePathLeavesItsOdometry)
 	// window one, all joined.
 	auto gentle = s.chain;
 	for (size_t i = 0; i < 200; i++) gentle[i].y() += 0.001 * static_cast<double>(i);
-	EXPECT_TRUE(OdometryBridge::strays(gentle, s.odometry, 40, 5).empty());
-	EXPECT_EQ(OdometryBridge::strays(gentle, s.odometry, 40, 0), (std::vector<OdometryBridge::Stretch>{{0, 199}}));
+	EXPECT_TRUE(OdometryBridge::strays(OdometryBridge::distances(gentle, s.odometry, 40), 40, 5).empty());
+	EXPECT_EQ(OdometryBridge::strays(OdometryBridge::distances(gentle, s.odometry, 40), 40, 0), (std::vector<OdometryBridge::Stretch>{{0, 199}}));
 }
 
 TEST(OdometryBridge, CandidatesAreEachStrayAndNeighboursTogetherWidened)
@@ -69,7 +69,12 @@ TEST(OdometryBridge, TheBridgeFollowsTheOdometryAndEndsOnThePath)
 	const auto b = OdometryBridge::bridge(path, s.odometry, {40, 60});
 	ASSERT_EQ(b.size(), path.size());
 	for (size_t i = 0; i < 200; i++)
-		if (i <= 40 || i >= 60) EXPECT_LT((b[i] - path[i]).norm(), 1e-12) << i;
+	{
+		if (i <= 40 || i >= 60)
+		{
+			EXPECT_LT((b[i] - path[i]).norm(), 1e-12) << i;
+		}
+	}
 	// Inside, the odometry's 5 cm steps (the chain from sweep 40 heads along +x) with the jump
 	// spread evenly over the 20 steps.
 	for (size_t i = 41; i <= 60; i++) EXPECT_LT((b[i] - b[i - 1] - Eigen::Vector3d(0.051, 0.025, 0.005)).norm(), 1e-12) << i;

@@ -37,14 +37,20 @@ double stray(const OdometryBridge::Path& path, const std::vector<OdometryFactor>
 }
 }  // namespace
 
-std::vector<OdometryBridge::Stretch> OdometryBridge::strays(
-	const Path& path, const std::vector<OdometryFactor>& odometry, size_t window, double gate)
+std::vector<double> OdometryBridge::distances(
+	const Path& path, const std::vector<OdometryFactor>& odometry, size_t window)
+{
+	std::vector<double> m;
+	for (size_t a = 0; window > 0 && a + window < path.size(); a++) m.push_back(stray(path, odometry, a, a + window));
+	return m;
+}
+
+std::vector<OdometryBridge::Stretch> OdometryBridge::strays(const std::vector<double>& m, size_t window, double gate)
 {
 	std::vector<Stretch> out;
-	if (window == 0) return out;
-	for (size_t a = 0; a + window < path.size(); a++)
+	for (size_t a = 0; a < m.size(); a++)
 	{
-		if (stray(path, odometry, a, a + window) <= gate) continue;
+		if (m[a] <= gate) continue;
 		if (!out.empty() && a <= out.back().second + window)
 			out.back().second = a + window;
 		else
@@ -53,11 +59,9 @@ std::vector<OdometryBridge::Stretch> OdometryBridge::strays(
 	return out;
 }
 
-double OdometryBridge::worst(const Path& path, const std::vector<OdometryFactor>& odometry, size_t window)
+double OdometryBridge::worst(const std::vector<double>& m)
 {
-	double m = 0;
-	for (size_t a = 0; window > 0 && a + window < path.size(); a++) m = std::max(m, stray(path, odometry, a, a + window));
-	return m;
+	return m.empty() ? 0 : *std::max_element(m.begin(), m.end());
 }
 
 std::vector<OdometryBridge::Stretch> OdometryBridge::candidates(

@@ -331,13 +331,15 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	// legs for a while): each solved again from the odometry's path across it, with the pairs
 	// held, and kept when it costs less over every contact either tied (eq. S8); after a kept
 	// one, the strays are found again (at most as many times as there were strays at first).
+	// m holds eq. S8's distances of x's windows, searched once per path x takes.
 	pb.same = held;
-	const auto strays = [&] { return OdometryBridge::strays(x.path, odometry, params.bridge_window, params.bridge_gate); };
-	const size_t most = params.bridge_gate > 0 ? strays().size() : 0;
+	auto m = OdometryBridge::distances(x.path, odometry, params.bridge_window);
+	const size_t most = params.bridge_gate > 0 ? OdometryBridge::strays(m, params.bridge_window, params.bridge_gate).size() : 0;
 	for (bool kept = most > 0; kept && out.bridges < most;)
 	{
 		kept = false;
-		for (const auto& s : OdometryBridge::candidates(strays(), params.bridge_window, n))
+		for (const auto& s :
+			 OdometryBridge::candidates(OdometryBridge::strays(m, params.bridge_window, params.bridge_gate), params.bridge_window, n))
 		{
 			TResult r = out;
 			State y = solve(pb, State{OdometryBridge::bridge(x.path, odometry, s), x.shifts}, in, solids, params, r);
@@ -350,6 +352,7 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 			{
 				r.bridgesTried = out.bridgesTried, r.bridges = out.bridges + 1;
 				x = std::move(y), out = r, ties = std::move(bridgeTies), kept = true;
+				m = OdometryBridge::distances(x.path, odometry, params.bridge_window);
 				break;
 			}
 		}
@@ -358,7 +361,7 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	for (const auto& set : sets)
 		for (const auto& f : set) (f.dof() < 2 ? out.duplicateWallsApart : out.duplicatesApart)++;
 	out.duplicatesApart -= out.duplicates, out.duplicateWallsApart -= out.duplicateWalls;
-	out.strayMax = OdometryBridge::worst(x.path, odometry, params.bridge_window);
+	out.strayMax = OdometryBridge::worst(m);
 	pb.same = std::move(held), pb.contacts = startTies;
 	out.costBefore = pb.cost(start);  // with the first round's ties and the pairs kept
 	return finish(std::move(x));

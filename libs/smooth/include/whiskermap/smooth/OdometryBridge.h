@@ -21,13 +21,16 @@ struct OdometryBridge
 	using Path = std::vector<Eigen::Vector3d>;
 	using Stretch = std::pair<size_t, size_t>;  ///< first and last sweep
 
-	/** The stretches of `path` (odometry[i] leads from sweep i-1 to i) covered by windows
-	 *  whose m exceeds `gate`; windows closer than `window` sweeps join one stretch. */
-	static std::vector<Stretch> strays(
-		const Path& path, const std::vector<OdometryFactor>& odometry, size_t window, double gate);
+	/** m of every window of `path` (odometry[i] leads from sweep i-1 to i): entry a for
+	 *  sweeps a..a + window (none when the path is shorter than a window). */
+	static std::vector<double> distances(const Path& path, const std::vector<OdometryFactor>& odometry, size_t window);
 
-	/** The largest m over every window of `path` (0 when the path is shorter than a window). */
-	static double worst(const Path& path, const std::vector<OdometryFactor>& odometry, size_t window);
+	/** The stretches covered by windows whose m (`distances`) exceeds `gate`; windows closer
+	 *  than `window` sweeps join one stretch. */
+	static std::vector<Stretch> strays(const std::vector<double>& m, size_t window, double gate);
+
+	/** The largest of `m` (0 when there is none). */
+	static double worst(const std::vector<double>& m);
 
 	/** The candidate stretches to bridge: each stray stretch, and each two neighbours together
 	 *  (a bend leaves the odometry where it begins and where it ends, and between them the path
