@@ -330,7 +330,7 @@ TEST(PathSmoother, AStretchLockedOntoTheWrongLegsIsBridged)
 	EXPECT_GT(Corridor::worst(refined.path, truth), 0.2);  // the smoother alone keeps the lock
 	EXPECT_EQ(refined.bridges, 0u);
 	EXPECT_GT(refined.strayMax, 5);
-	p.bridge_gate = 5;
+	p.bridge_gate = smooth::TSmoothParams{}.bridge_gate;
 	const auto bridged = PathSmoother::run(in, p);
 	EXPECT_GE(bridged.bridges, 1u);
 	EXPECT_GE(bridged.bridgesTried, bridged.bridges);

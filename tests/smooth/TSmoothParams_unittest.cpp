@@ -50,7 +50,7 @@ TEST_F(TSmoothParamsTest, DefaultsWithoutTheSectionAndEveryKeyRead)
 	EXPECT_EQ(d.table_sigma, 0);  // off unless asked for
 	EXPECT_DOUBLE_EQ(p.bridge_gate, 6);
 	EXPECT_EQ(p.bridge_window, 30u);
-	EXPECT_DOUBLE_EQ(d.bridge_gate, 5);  // on unless turned off
+	EXPECT_DOUBLE_EQ(d.bridge_gate, 4);  // on unless turned off
 	EXPECT_EQ(d.bridge_window, 40u);
 }
 

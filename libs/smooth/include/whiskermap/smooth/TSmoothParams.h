@@ -34,7 +34,7 @@ struct TSmoothParams
 	/** Std-devs: a window of `bridge_window` sweeps over which the smoothed path's motion
 	 *  differs from the odometry's by more than this is a stray stretch, which the smoother
 	 *  solves again from the odometry's own path across it (eq. S8, OdometryBridge; 0: never). */
-	double bridge_gate = 5;
+	double bridge_gate = 4;
 	unsigned bridge_window = 40;  ///< sweeps: the window of eq. S8
 	unsigned rounds = 6;  ///< association rounds (each re-ties the contacts, then solves)
 	unsigned iterations = 10;  ///< Levenberg-Marquardt iterations per round, at most
