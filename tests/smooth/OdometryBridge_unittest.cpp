@@ -28,17 +28,19 @@ struct Straight
 TEST(OdometryBridge, StraysAreWhereThePathLeavesItsOdometry)
 {
 	Straight s;
-	EXPECT_TRUE(OdometryBridge::strays(OdometryBridge::distances(s.chain, s.odometry, 40), 40, 5).empty());
-	EXPECT_LT(OdometryBridge::worst(OdometryBridge::distances(s.chain, s.odometry, 40)), 1e-9);
+	const auto onChain = OdometryBridge::distances(s.chain, s.odometry, 40);
+	EXPECT_TRUE(OdometryBridge::strays(onChain, 40, 5).empty());
+	EXPECT_LT(OdometryBridge::worst(onChain), 1e-9);
 	// A path that takes 1 m sideways over sweeps 30-35 and comes back over 160-165 (a filter
 	// locked onto a leg a table's width away): each move strays, and between them the path
 	// follows the odometry, shifted.
 	auto bent = s.chain;
 	for (size_t i = 30; i < 200; i++)
 		bent[i].y() += 0.2 * static_cast<double>(std::min<size_t>(i - 30, 5) - std::min<size_t>(i > 160 ? i - 160 : 0, 5));
-	const auto strays = OdometryBridge::strays(OdometryBridge::distances(bent, s.odometry, 40), 40, 5);
+	const auto onBent = OdometryBridge::distances(bent, s.odometry, 40);
+	const auto strays = OdometryBridge::strays(onBent, 40, 5);
 	ASSERT_EQ(strays.size(), 2u);
-	EXPECT_GT(OdometryBridge::worst(OdometryBridge::distances(bent, s.odometry, 40)), 5);
+	EXPECT_GT(OdometryBridge::worst(onBent), 5);
 	EXPECT_EQ(OdometryBridge::worst(OdometryBridge::distances(bent, s.odometry, 200)), 0);  // no window fits
 	EXPECT_LE(strays[0].first, 30u);
 	EXPECT_GE(strays[0].second, 35u);
@@ -49,8 +51,9 @@ TEST(OdometryBridge, StraysAreWhereThePathLeavesItsOdometry)
 	// window one, all joined.
 	auto gentle = s.chain;
 	for (size_t i = 0; i < 200; i++) gentle[i].y() += 0.001 * static_cast<double>(i);
-	EXPECT_TRUE(OdometryBridge::strays(OdometryBridge::distances(gentle, s.odometry, 40), 40, 5).empty());
-	EXPECT_EQ(OdometryBridge::strays(OdometryBridge::distances(gentle, s.odometry, 40), 40, 0), (std::vector<OdometryBridge::Stretch>{{0, 199}}));
+	const auto onGentle = OdometryBridge::distances(gentle, s.odometry, 40);
+	EXPECT_TRUE(OdometryBridge::strays(onGentle, 40, 5).empty());
+	EXPECT_EQ(OdometryBridge::strays(onGentle, 40, 0), (std::vector<OdometryBridge::Stretch>{{0, 199}}));
 }
 
 TEST(OdometryBridge, CandidatesAreEachStrayAndNeighboursTogetherWidened)

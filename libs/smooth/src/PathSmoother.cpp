@@ -334,12 +334,12 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	// m holds eq. S8's distances of x's windows, searched once per path x takes.
 	pb.same = held;
 	auto m = OdometryBridge::distances(x.path, odometry, params.bridge_window);
-	const size_t most = params.bridge_gate > 0 ? OdometryBridge::strays(m, params.bridge_window, params.bridge_gate).size() : 0;
+	const auto strays = [&] { return OdometryBridge::strays(m, params.bridge_window, params.bridge_gate); };
+	const size_t most = params.bridge_gate > 0 ? strays().size() : 0;
 	for (bool kept = most > 0; kept && out.bridges < most;)
 	{
 		kept = false;
-		for (const auto& s :
-			 OdometryBridge::candidates(OdometryBridge::strays(m, params.bridge_window, params.bridge_gate), params.bridge_window, n))
+		for (const auto& s : OdometryBridge::candidates(strays(), params.bridge_window, n))
 		{
 			TResult r = out;
 			State y = solve(pb, State{OdometryBridge::bridge(x.path, odometry, s), x.shifts}, in, solids, params, r);
