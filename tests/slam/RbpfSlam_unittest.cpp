@@ -220,6 +220,29 @@ TEST_F(TSlamParamsTest, ExactOdometryModelFollowsTheOdometry)
 	}
 }
 
+TEST_F(TSlamParamsTest, HeadingExactOdometryModelKeepsTheHeadingsTurns)
+{
+	// An odometry exact in heading only (a gyro's, say: every rotation term and floor zero):
+	// the particles take the recorded turns exactly and still spread in position.
+	std::ofstream(path("gyro.ini")) << "[odometry]\ntranslation_noise = 0.05\nrotation_noise_deg = 0\nturn_noise = 0\n"
+									   "turn_translation_noise = 0\nscale_bias = 0.01\n"
+									   "[motion_model]\nmin_std_xy = 0.001\nmin_std_phi_deg = 0\n";
+	auto p = slam::TSlamParams::load(ini("[slam]\nodometry_model = " + path("gyro.ini") + "\nparticles = 3\nmap_config = " +
+										 SRC + "/config/whisker-map.ini\n"));
+	const auto sweeps = firstSweeps(80);
+	EXPECT_EQ(slam::RbpfSlam(p, maps::MapConfig::load(p.map_config)).particles().particlesCount(), 3u);
+	const auto path = run(p, sweeps);
+	ASSERT_EQ(path.size(), sweeps.size());
+	double apart = 0;
+	for (size_t i = 1; i < path.size(); i++)
+	{
+		const double turn = path[i].phi() - path[i - 1].phi(), recorded = sweeps[i].robotPose.phi() - sweeps[i - 1].robotPose.phi();
+		EXPECT_NEAR(mrpt::math::wrapToPi(turn - recorded), 0, 1e-9) << "sweep " << i;
+		apart = std::max(apart, path[i].distanceTo(sweeps[i].robotPose));
+	}
+	EXPECT_GT(apart, 0.005);  // positions are the filter's own, not the odometry's
+}
+
 TEST(RbpfSlam, BestMapIsTheMapBuiltAtItsPath)
 {
 	// The particle's map is what the map makes of the sweeps at the particle's poses: the
