@@ -58,10 +58,10 @@ void drawPaths(OutputDir& out, const SlamOutputs::TRun& run, const MapOutputs::T
 	const std::string what = run.oracle ? "oracle (red)"
 						   : run.smoothing ? "SLAM smoothed (red), best particle (pink)"
 										   : "SLAM (red)";
-	img.caption(std::filesystem::path(run.input).filename().string() + ": paths and the " +
-				(run.oracle ? "map at the oracle's path" : "best particle's map"));
+	img.caption(std::filesystem::path(run.input).filename().string() + ": paths and the map at the " +
+				(run.oracle ? "oracle's path" : run.smoothing ? "smoothed path" : "best particle's path (its own map)"));
 	img.caption(what + ", odometry (orange)" + (run.truthPath.empty() ? "" : ", truth (blue)") + ", map (grey)" +
-				(s.world ? ", true tables" : ""));
+				(s.world ? ", true tables (blue)" : ""));
 	img.save(out.path("paths.png"));
 }
 

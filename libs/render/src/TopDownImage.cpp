@@ -64,16 +64,41 @@ void TopDownImage::shapelet(const obs::Shapelet& s, mrpt::img::TColor c)
 	segment({s.x, s.y}, {s.x + 0.06 * std::cos(s.normal), s.y + 0.06 * std::sin(s.normal)}, c, 1);
 }
 
+namespace
+{
+constexpr int CHAR_W = 9, LINE_H = 15, PAD = 4;  // MRPT's default font, 9x15
+}
+
 void TopDownImage::caption(const std::string& text, mrpt::img::TColor c)
 {
-	m_img.textOut(m_margin, m_captionY, text, c);
-	m_captionY += 12;
+	const size_t width = std::max<size_t>(8, (m_img.getWidth() - 2 * PAD) / CHAR_W);
+	size_t from = 0;
+	while (text.size() - from > width)
+	{
+		size_t cut = text.rfind(' ', from + width);
+		if (cut == std::string::npos || cut <= from) cut = from + width;  // a word longer than a line
+		m_captions.push_back({text.substr(from, cut - from), c});
+		from = text[cut] == ' ' ? cut + 1 : cut;
+	}
+	m_captions.push_back({text.substr(from), c});
+}
+
+mrpt::img::CImage TopDownImage::picture() const
+{
+	if (m_captions.empty()) return m_img;
+	const int band = 2 * PAD + LINE_H * static_cast<int>(m_captions.size());
+	mrpt::img::CImage out(m_img.getWidth(), m_img.getHeight() + band, mrpt::img::CH_RGB);
+	out.filledRectangle(0, 0, out.getWidth() - 1, band - 1, {255, 255, 255});
+	for (size_t i = 0; i < m_captions.size(); i++)
+		out.textOut(PAD, PAD + LINE_H * static_cast<int>(i), m_captions[i].text, m_captions[i].colour);
+	out.drawImage(0, band, m_img);
+	return out;
 }
 
 void TopDownImage::save(const std::string& path) const
 {
 	const std::string tmp = path + ".tmp.png";
-	if (!m_img.saveToFile(tmp)) throw core::Error(path + ": cannot write image");
+	if (!picture().saveToFile(tmp)) throw core::Error(path + ": cannot write image");
 	std::filesystem::rename(tmp, path);
 }
 }  // namespace whiskermap::render

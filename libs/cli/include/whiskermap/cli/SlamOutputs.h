@@ -39,7 +39,7 @@ struct SlamOutputs
 		std::string filterFile;  ///< the best particle's path, written (staged); empty: no filter (oracle)
 		bool oracle = false;  ///< whisker-slam --oracle: no filter, the true path smoothed against the true solids
 		StepFigures steps;
-		std::vector<world::Table> mapTables;  ///< the best particle's map
+		std::vector<world::Table> mapTables;  ///< the map written: built at the estimated path (smoothed, or the best particle's)
 		/** Without smoothing: the rebuilt map equals the best particle's map (with smoothing the
 		 *  map is rebuilt at other poses: nothing to compare). */
 		std::optional<bool> mapMatches;

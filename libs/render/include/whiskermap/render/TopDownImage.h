@@ -33,12 +33,16 @@ class TopDownImage
 	void path(const std::vector<mrpt::poses::CPose2D>& poses, mrpt::img::TColor c, unsigned width = 1);
 	/** A shapelet: a dot and a short tick along its surface normal. */
 	void shapelet(const obs::Shapelet& s, mrpt::img::TColor c);
-	/** A caption line at the top left (call repeatedly for more lines). */
+	/** A caption for the band above the drawing (call repeatedly for more): wrapped at spaces
+	 *  to the picture's width, one text line per 15 px (MRPT's default 9x15 font). */
 	void caption(const std::string& text, mrpt::img::TColor c = mrpt::img::TColor(0, 0, 0));
 
-	/** Writes the PNG (via a temporary file, renamed when complete). Throws core::Error. */
+	/** The picture: the captions' band, then the drawing. */
+	mrpt::img::CImage picture() const;
+	/** Writes picture() as PNG (via a temporary file, renamed when complete). Throws core::Error. */
 	void save(const std::string& path) const;
 
+	/** The drawing alone, world (x, y) at pixel (px(x), py(y)). */
 	const mrpt::img::CImage& image() const { return m_img; }
 
    private:
@@ -46,8 +50,15 @@ class TopDownImage
 	int py(double y) const;
 	void segment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, mrpt::img::TColor c, unsigned width);
 
+	struct Line
+	{
+		std::string text;
+		mrpt::img::TColor colour;
+	};
+
 	double m_x0, m_y1, m_scale;
-	int m_margin = 20, m_captionY = 4;
+	int m_margin = 20;
 	mrpt::img::CImage m_img;
+	std::vector<Line> m_captions;  ///< wrapped, one per text line
 };
 }  // namespace whiskermap::render
