@@ -59,7 +59,7 @@ eval::Calibration EvalCalibration::ofRuns(const std::string& list, const eval::E
 void EvalCalibration::plot(const eval::Calibration& c, const std::string& title, const std::string& png)
 {
 	using V = Eigen::Vector2d;
-	render::TopDownImage img(-0.05, 1.05, -0.05, 1.17, 500);
+	render::TopDownImage img(-0.05, 1.05, -0.05, 1.05, 500);  // the captions go above (TopDownImage::caption)
 	const mrpt::img::TColor black(0, 0, 0), grey(160, 160, 160), bar(140, 180, 230), dot(200, 30, 30);
 	for (size_t i = 0; i < eval::Calibration::BINS; i++)
 	{
