@@ -343,3 +343,67 @@ TEST(PathSmoother, AStretchLockedOntoTheWrongLegsIsBridged)
 	EXPECT_EQ(kept.bridgesTried, 0u);
 	EXPECT_LT(Corridor::worst(kept.path, truth), 1e-6);
 }
+
+TEST(PathSmoother, AStretchMappedWithItsCopyMovesAsOne)
+{
+	// A robot driving 5 m along +x past a row of posts 0.5 m apart on its left, and back, away
+	// from and towards a wall across its line whose face is at x = -0.5. Each sweep touches the
+	// next post ahead (its near and bottom faces), and the wall within 1 m. The start path (a
+	// filter's) locked one post ahead at sweep 170, on the way back, and stayed there to the
+	// end: its contacts tie to the wrong posts exactly, and it mapped the wall a second time,
+	// 0.5 m beyond the first. Holding the two walls as one (eq. S5) from that path drags the copy
+	// off its contacts, so eq. S6 leaves them apart; moving the stretch with its copy onto the
+	// first (eq. S9) finds the truth. (Eq. S8 would bridge this stretch too, from the exact
+	// odometry; it is off, to see eq. S9 alone.)
+	const size_t n = 202;
+	PathSmoother::TInput in;
+	std::vector<Eigen::Vector3d> truth;
+	in.solids.push_back(world::Obstacle::rectangle({-0.525, 0}, M_PI / 2, 0.3, 0.025, 0.5));  // the wall, face x = -0.5
+	in.solids.push_back(world::Obstacle::rectangle({-1.025, 0}, M_PI / 2, 0.3, 0.025, 0.5));  // its copy
+	for (int k = 0; k < 12; k++)
+		in.solids.push_back(world::Obstacle::rectangle({0.5 * k + 0.25, 0.4}, 0, 0.025, 0.025, 0.5, k, 0));
+	for (size_t i = 0; i < n; i++)
+	{
+		const bool back = i > 100;
+		const double x = back ? 5 - 0.05 * static_cast<double>(i - 101) : 0.05 * static_cast<double>(i);
+		const double s = back ? -1 : 1;  // robot frame = world frame mirrored on the way back
+		truth.emplace_back(x, 0, back ? M_PI : 0);
+		in.increments.emplace_back(i == 101 ? 0 : i ? 0.05 : 0, 0, i == 101 ? M_PI : 0);
+		in.covariances.push_back(Eigen::Vector3d(1e-4, 1e-4, 1e-4).asDiagonal());
+		// The next post whose near face is 5 cm ahead, if there is one.
+		const double post = back ? 0.5 * std::floor((x - 0.075 - 0.25) / 0.5) + 0.25
+								 : 0.5 * std::ceil((x + 0.075 - 0.25) / 0.5) + 0.25;
+		baseline::Contact face, bottom, wall;
+		face.p = {s * (post - s * 0.025 - x), s * 0.4}, face.normal = M_PI;
+		bottom.p = {s * (post - x), s * 0.375}, bottom.normal = -s * M_PI / 2;
+		wall.p = {s * (-0.5 - x), 0}, wall.normal = back ? M_PI : 0;
+		std::vector<baseline::Contact*> touched;
+		if (post > 0 && post < 6) touched = {&face, &bottom};
+		if (x <= 1) touched.push_back(&wall);
+		for (auto* c : touched)
+			c->shaft = c->p.normalized(), c->sigma_r = 0.002, c->sweep = static_cast<uint32_t>(i), in.contacts.push_back(*c);
+		in.path.push_back(truth.back());
+		if (back) in.path.back().x() -= 0.1 * static_cast<double>(std::clamp<long>(static_cast<long>(i) - 165, 0, 5));
+	}
+	smooth::TSmoothParams p;
+	p.duplicate_wall_distance = 0.6;
+	p.bridge_gate = 0;
+	p.stretch_margin = 0;
+	const auto apart = PathSmoother::run(in, p);
+	EXPECT_EQ(apart.duplicateWalls, 0u);
+	EXPECT_EQ(apart.duplicateWallsApart, 1u);
+	EXPECT_EQ(apart.stretchesTried, 0u);
+	EXPECT_GT(Corridor::worst(apart.path, truth), 0.4);  // eq. S6 keeps the lock
+	p.stretch_margin = smooth::TSmoothParams{}.stretch_margin;
+	const auto moved = PathSmoother::run(in, p);
+	EXPECT_EQ(moved.duplicateWalls, 1u);
+	EXPECT_EQ(moved.stretches, 1u);
+	EXPECT_GE(moved.stretchesTried, moved.stretches);
+	EXPECT_EQ(moved.tied, in.contacts.size());
+	EXPECT_LT(Corridor::worst(moved.path, truth), 0.002);
+	// From the truth the copy is touched by nothing: no pair, nothing tried, the path stays.
+	in.path = truth;
+	const auto kept = PathSmoother::run(in, p);
+	EXPECT_EQ(kept.duplicateWalls + kept.duplicateWallsApart + kept.stretchesTried, 0u);
+	EXPECT_LT(Corridor::worst(kept.path, truth), 1e-6);
+}

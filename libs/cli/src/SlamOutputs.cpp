@@ -98,6 +98,7 @@ void writeSummary(const std::string& path, const SlamOutputs::TRun& run, const s
 		j["smoothing"] = {
 			{"contacts_tied", sm->tied}, {"duplicate_legs", sm->duplicates}, {"duplicate_legs_apart", sm->duplicatesApart},
 			{"duplicate_walls", sm->duplicateWalls}, {"duplicate_walls_apart", sm->duplicateWallsApart},
+			{"stretches", sm->stretches}, {"stretches_tried", sm->stretchesTried},
 			{"bridges", sm->bridges}, {"bridges_tried", sm->bridgesTried}, {"stray_max", sm->strayMax},
 			{"cost_before", sm->costBefore}, {"cost_after", sm->costAfter}, {"rounds", sm->rounds},
 			{"iterations", sm->iterations}, {"seconds", run.smoothingSeconds}};

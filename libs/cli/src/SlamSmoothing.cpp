@@ -71,6 +71,7 @@ smooth::PathSmoother::TResult SlamSmoothing::run(
 		result.costBefore = before.costBefore;  // at the particle's path
 		result.rounds += before.rounds, result.iterations += before.iterations;
 		result.bridges += before.bridges, result.bridgesTried += before.bridgesTried;
+		result.stretches += before.stretches, result.stretchesTried += before.stretchesTried;
 	}
 	return result;
 }

@@ -7,6 +7,7 @@
 #include <whiskermap/smooth/OdometryFactor.h>
 #include <whiskermap/smooth/PathSmoother.h>
 #include <whiskermap/smooth/SameSolidFactor.h>
+#include <whiskermap/smooth/ShiftedStretch.h>
 #include <whiskermap/smooth/TableShapeFactor.h>
 #include <whiskermap/smooth/WallLines.h>
 
@@ -313,19 +314,32 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	auto ties = pb.contacts;
 	std::vector<SameSolidFactor> held;  // the sets kept so far
 	const auto penalty = [&](const std::vector<SameSolidFactor>& kept) { return 2 * (all - dof(kept)); };
+	// A set left apart from the start is tried again from x with the stretch of path that
+	// touched one copy moved, with what only that stretch touched, onto the other: the b
+	// copies, then the a copies (eq. S9); the first solution that holds it is kept.
 	for (const auto& set : sets)
 	{
 		auto trial = held;
 		trial.insert(trial.end(), set.begin(), set.end());
-		pb.same = trial;
-		TResult r = out;
-		State y = solve(pb, start, in, solids, params, r);
-		auto trialTies = pb.contacts;
-		const double with = unionCost(pb, y, ties, in.contacts.size(), params.gate) + penalty(trial);
-		pb.same = held, pb.contacts = ties;
-		const double without = unionCost(pb, x, trialTies, in.contacts.size(), params.gate) + penalty(held);
-		if (with <= without)  // eq. S6
-			x = std::move(y), out = r, ties = std::move(trialTies), held = std::move(trial);
+		for (int from = 0; from < 3; from++)  // the start; x with the b copies moved; with the a copies
+		{
+			State y0 = from ? x : start;
+			if (from && !(params.stretch_margin > 0 &&
+						  ShiftedStretch::move(y0.path, y0.shifts, ties, set, from == 1, params.stretch_margin)))
+				continue;
+			pb.same = trial;
+			TResult r = out;
+			State y = solve(pb, y0, in, solids, params, r);
+			auto trialTies = pb.contacts;
+			const double with = unionCost(pb, y, ties, in.contacts.size(), params.gate) + penalty(trial);
+			pb.same = held, pb.contacts = ties;
+			const double without = unionCost(pb, x, trialTies, in.contacts.size(), params.gate) + penalty(held);
+			if (from) out.stretchesTried++;
+			if (with > without) continue;  // eq. S6
+			r.stretchesTried = out.stretchesTried, r.stretches = out.stretches + (from > 0);
+			x = std::move(y), out = std::move(r), ties = std::move(trialTies), held = std::move(trial);
+			break;
+		}
 	}
 	// Stretches where the solution strays from the odometry (a filter locked onto the wrong
 	// legs for a while): each solved again from the odometry's path across it, with the pairs

@@ -24,7 +24,10 @@ namespace whiskermap::smooth
  *  the map holds twice (DuplicateLegs: a table mapped again after the path drifted) are held
  *  to one place, and walls it holds twice (DuplicateWalls) to one line (SameSolidFactor),
  *  which closes the loop the particle left open; each table or wall mapped twice is held only
- *  if the solution holding it costs no more than the one leaving it apart (eq. S6). Odometry
+ *  if the solution holding it costs no more than the one leaving it apart (eq. S6); one left
+ *  apart from the start is tried again with the stretch of path that mapped one copy moved onto
+ *  the other (eq. S9, ShiftedStretch), a jump small steps cannot make. Stretches that stray
+ *  from their odometry are solved again from it (eq. S8, OdometryBridge). Odometry
  *  told exact (every increment's covariance zero) leaves nothing to estimate: the path is the
  *  odometry's chain from the start. */
 class PathSmoother
@@ -47,6 +50,8 @@ class PathSmoother
 		size_t duplicatesApart = 0;  ///< pairs found but left apart: holding them cost more (eq. S6)
 		size_t duplicateWalls = 0;  ///< pairs of wall groups held to one line (eq. S5; DuplicateWalls)
 		size_t duplicateWallsApart = 0;  ///< wall pairs found but left apart (eq. S6)
+		size_t stretches = 0;  ///< pairs held only once the stretch that mapped a copy moved onto the other (eq. S9; ShiftedStretch)
+		size_t stretchesTried = 0;  ///< of such moves tried (up to two per pair set left apart from the start)
 		size_t bridges = 0;  ///< stray stretches solved again from the odometry and kept (eq. S8; OdometryBridge)
 		size_t bridgesTried = 0;  ///< of those tried
 		double strayMax = 0;  ///< the result's largest m over a window of bridge_window sweeps (eq. S8)

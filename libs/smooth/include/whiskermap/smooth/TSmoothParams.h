@@ -36,6 +36,10 @@ struct TSmoothParams
 	 *  solves again from the odometry's own path across it (eq. S8, OdometryBridge; 0: never). */
 	double bridge_gate = 4;
 	unsigned bridge_window = 40;  ///< sweeps: the window of eq. S8
+	/** Sweeps: a pair set (a table or a wall mapped twice) that eq. S6 leaves apart is tried
+	 *  again with the stretch of path that touched one copy moved onto the other, the move
+	 *  fading over this many sweeps at its ends (eq. S9, ShiftedStretch; 0: never). */
+	unsigned stretch_margin = 40;
 	unsigned rounds = 6;  ///< association rounds (each re-ties the contacts, then solves)
 	unsigned iterations = 10;  ///< Levenberg-Marquardt iterations per round, at most
 	/** Smoothing passes: the first against the best particle's map, each further one against
