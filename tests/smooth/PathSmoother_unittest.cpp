@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <whiskermap/core/Angles.h>
 #include <whiskermap/core/Error.h>
 #include <whiskermap/smooth/PathSmoother.h>
 #include <whiskermap/world/Table.h>
@@ -406,4 +407,42 @@ TEST(PathSmoother, AStretchMappedWithItsCopyMovesAsOne)
 	const auto kept = PathSmoother::run(in, p);
 	EXPECT_EQ(kept.duplicateWalls + kept.duplicateWallsApart + kept.stretchesTried, 0u);
 	EXPECT_LT(Corridor::worst(kept.path, truth), 1e-6);
+}
+
+TEST(PathSmoother, TurnsToldExactHoldAgainstContactsThatPull)
+{
+	// The corridor, each sweep touching the side wall twice, 0.2 m behind and ahead, but the
+	// wall mapped 2 degrees askew: to fit both contacts a sweep must turn with it. Odometry with
+	// heading noise lets the path turn towards the wall; odometry exact in heading (a gyro's
+	// turns: the yaw variance zero, eq. S2's floor of 0.01 degree a step) keeps the turns.
+	Corridor c;
+	c.in.contacts.clear();
+	for (size_t i = 0; i < c.truth.size(); i++)
+		for (const double along : {-0.2, 0.2})
+		{
+			baseline::Contact side;
+			side.p = {along, 0.3}, side.normal = -M_PI / 2, side.shaft = side.p.normalized(), side.sigma_r = 0.002;
+			side.sweep = static_cast<uint32_t>(i);
+			c.in.contacts.push_back(side);
+		}
+	c.in.solids = {world::Obstacle::rectangle({1.2, 0.35}, core::deg2rad(2), 1.5, 0.05, 0.5)};
+	c.in.path = c.truth;
+	smooth::TSmoothParams p;
+	p.gate = 0.1;
+	const auto maxTurn = [&](const PathSmoother::TResult& r) {
+		double w = 0;
+		for (size_t i = 1; i < r.path.size(); i++)
+			w = std::max(w, std::abs(core::wrapToPi(r.path[i].z() - r.path[i - 1].z() - c.in.increments[i].z())));
+		return core::rad2deg(w);
+	};
+	const auto loose = PathSmoother::run(c.in, p);
+	for (auto& cov : c.in.covariances) cov(2, 2) = 0;
+	const auto exact = PathSmoother::run(c.in, p);
+	EXPECT_EQ(exact.tied, c.in.contacts.size());
+	EXPECT_GT(core::rad2deg(loose.path.back().z()), 1);  // the path turned towards the askew wall
+	EXPECT_GT(maxTurn(loose), 1);  // most of it in the first step
+	// Told exact, each step turns within a few of eq. S2's floors (0.01 degree) of the odometry:
+	// a map askew by 2 degrees under every sweep bends the 40 steps by 0.44 degrees in all.
+	EXPECT_LT(maxTurn(exact), 0.05);
+	EXPECT_LT(std::abs(core::rad2deg(exact.path.back().z())), 0.6);
 }
