@@ -7,7 +7,7 @@
 
 namespace whiskermap::smooth
 {
-/** A stretch of path mapped twice (eq. S9, doc/slam.md, "A stretch moved with what it mapped").
+/** A stretch of path shifted with what it mapped (eq. S9, doc/slam.md, "A stretch moved with what it mapped").
  *  A filter that drifted for a while, then came back, maps what it touched meanwhile where the
  *  drift put it: a wall or a table a second time, decimetres from the first. Eqs. S4-S6 ask
  *  whether the two copies are one by solving from the path as it is; but the contacts of that
