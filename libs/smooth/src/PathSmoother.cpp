@@ -314,6 +314,25 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	auto ties = pb.contacts;
 	std::vector<SameSolidFactor> held;  // the sets kept so far
 	const auto penalty = [&](const std::vector<SameSolidFactor>& kept) { return 2 * (all - dof(kept)); };
+	// A hypothesis against x: solved from y0 with `same` held, and both solutions' costs over
+	// every contact either tied (unionCost; y's with `same`, x's with the sets held).
+	struct Trial
+	{
+		State y;
+		TResult r;
+		std::vector<ContactFactor> ties;
+		double with, without;
+	};
+	const auto tryFrom = [&](State y0, const std::vector<SameSolidFactor>& same) {
+		pb.same = same;
+		Trial t{{}, out, {}, 0, 0};
+		t.y = solve(pb, std::move(y0), in, solids, params, t.r);
+		t.ties = pb.contacts;
+		t.with = unionCost(pb, t.y, ties, in.contacts.size(), params.gate);
+		pb.same = held, pb.contacts = ties;
+		t.without = unionCost(pb, x, t.ties, in.contacts.size(), params.gate);
+		return t;
+	};
 	// A set left apart from the start is tried again from x with the stretch of path that
 	// touched one copy moved, with what only that stretch touched, onto the other: the b
 	// copies, then the a copies (eq. S9); the first solution that holds it is kept.
@@ -327,17 +346,11 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 			if (from && !(params.stretch_margin > 0 &&
 						  ShiftedStretch::move(y0.path, y0.shifts, ties, set, from == 1, params.stretch_margin)))
 				continue;
-			pb.same = trial;
-			TResult r = out;
-			State y = solve(pb, y0, in, solids, params, r);
-			auto trialTies = pb.contacts;
-			const double with = unionCost(pb, y, ties, in.contacts.size(), params.gate) + penalty(trial);
-			pb.same = held, pb.contacts = ties;
-			const double without = unionCost(pb, x, trialTies, in.contacts.size(), params.gate) + penalty(held);
+			auto t = tryFrom(std::move(y0), trial);
 			if (from) out.stretchesTried++;
-			if (with > without) continue;  // eq. S6
-			r.stretchesTried = out.stretchesTried, r.stretches = out.stretches + (from > 0);
-			x = std::move(y), out = std::move(r), ties = std::move(trialTies), held = std::move(trial);
+			if (t.with + penalty(trial) > t.without + penalty(held)) continue;  // eq. S6
+			t.r.stretchesTried = out.stretchesTried, t.r.stretches = out.stretches + (from > 0);
+			x = std::move(t.y), out = std::move(t.r), ties = std::move(t.ties), held = std::move(trial);
 			break;
 		}
 	}
@@ -346,7 +359,6 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	// held, and kept when it costs less over every contact either tied (eq. S8); after a kept
 	// one, the strays are found again (at most as many times as there were strays at first).
 	// m holds eq. S8's distances of x's windows, searched once per path x takes.
-	pb.same = held;
 	auto m = OdometryBridge::distances(x.path, odometry, params.bridge_window);
 	const auto strays = [&] { return OdometryBridge::strays(m, params.bridge_window, params.bridge_gate); };
 	const size_t most = params.bridge_gate > 0 ? strays().size() : 0;
@@ -355,17 +367,12 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 		kept = false;
 		for (const auto& s : OdometryBridge::candidates(strays(), params.bridge_window, n))
 		{
-			TResult r = out;
-			State y = solve(pb, State{OdometryBridge::bridge(x.path, odometry, s), x.shifts}, in, solids, params, r);
-			auto bridgeTies = pb.contacts;
-			const double with = unionCost(pb, y, ties, in.contacts.size(), params.gate);
-			pb.contacts = ties;
-			const double without = unionCost(pb, x, bridgeTies, in.contacts.size(), params.gate);
+			auto t = tryFrom(State{OdometryBridge::bridge(x.path, odometry, s), x.shifts}, held);
 			out.bridgesTried++;
-			if (with < without)
+			if (t.with < t.without)
 			{
-				r.bridgesTried = out.bridgesTried, r.bridges = out.bridges + 1;
-				x = std::move(y), out = r, ties = std::move(bridgeTies), kept = true;
+				t.r.bridgesTried = out.bridgesTried, t.r.bridges = out.bridges + 1;
+				x = std::move(t.y), out = std::move(t.r), ties = std::move(t.ties), kept = true;
 				m = OdometryBridge::distances(x.path, odometry, params.bridge_window);
 				break;
 			}
