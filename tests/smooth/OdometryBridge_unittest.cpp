@@ -82,3 +82,25 @@ TEST(OdometryBridge, TheBridgeFollowsTheOdometryAndEndsOnThePath)
 	// spread evenly over the 20 steps.
 	for (size_t i = 41; i <= 60; i++) EXPECT_LT((b[i] - b[i - 1] - Eigen::Vector3d(0.051, 0.025, 0.005)).norm(), 1e-12) << i;
 }
+
+TEST(OdometryBridge, AShortBendHidesInALongWindow)
+{
+	// A path that steps 16 cm sideways over sweeps 100-103, follows the odometry there for
+	// eight sweeps and steps back over 112-115 (a path bent onto a leg mapped beside its place,
+	// both times it is touched): a window of 40 sweeps that sees the bend whole sees no net
+	// motion, one that sees half of it holds it within its heading's covariance; a window of
+	// 12 sees each step.
+	Straight s;
+	auto bent = s.chain;
+	for (size_t i = 100; i < 200; i++)
+		bent[i].y() += 0.04 * static_cast<double>(std::min<size_t>(i - 100, 4) - std::min<size_t>(i > 111 ? i - 111 : 0, 4));
+	const auto m40 = OdometryBridge::distances(bent, s.odometry, 40), m12 = OdometryBridge::distances(bent, s.odometry, 12);
+	EXPECT_LT(OdometryBridge::worst(m40), 3);
+	EXPECT_TRUE(OdometryBridge::strays(m40, 40, 4).empty());
+	EXPECT_GT(OdometryBridge::worst(m12), 4);
+	const auto strays = OdometryBridge::strays(m12, 12, 4);
+	ASSERT_FALSE(strays.empty());
+	EXPECT_LE(strays.front().first, 100u);
+	EXPECT_GE(strays.back().second, 115u);
+	EXPECT_GT(strays.front().first, 60u);  // the straight path before it is no stray
+}

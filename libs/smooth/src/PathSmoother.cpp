@@ -358,14 +358,30 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	// legs for a while): each solved again from the odometry's path across it, with the pairs
 	// held, and kept when it costs less over every contact either tied (eq. S8); after a kept
 	// one, the strays are found again (at most as many times as there were strays at first).
+	// Two windows: a bend that comes back within the long one shows only in the short one.
 	// m holds eq. S8's distances of x's windows, searched once per path x takes.
-	auto m = OdometryBridge::distances(x.path, odometry, params.bridge_window);
-	const auto strays = [&] { return OdometryBridge::strays(m, params.bridge_window, params.bridge_gate); };
-	const size_t most = params.bridge_gate > 0 ? strays().size() : 0;
+	std::vector<size_t> windows{params.bridge_window};
+	if (params.bridge_short_window > 0) windows.push_back(params.bridge_short_window);
+	std::vector<std::vector<double>> m;
+	const auto distances = [&] {
+		m.clear();
+		for (const size_t w : windows) m.push_back(OdometryBridge::distances(x.path, odometry, w));
+	};
+	const auto candidates = [&] {
+		std::vector<OdometryBridge::Stretch> found;
+		for (size_t k = 0; k < windows.size(); k++)
+			for (const auto& s : OdometryBridge::candidates(OdometryBridge::strays(m[k], windows[k], params.bridge_gate), windows[k], n))
+				if (std::find(found.begin(), found.end(), s) == found.end()) found.push_back(s);
+		return found;
+	};
+	distances();
+	size_t most = 0;
+	for (size_t k = 0; k < windows.size() && params.bridge_gate > 0; k++)
+		most += OdometryBridge::strays(m[k], windows[k], params.bridge_gate).size();
 	for (bool kept = most > 0; kept && out.bridges < most;)
 	{
 		kept = false;
-		for (const auto& s : OdometryBridge::candidates(strays(), params.bridge_window, n))
+		for (const auto& s : candidates())
 		{
 			auto t = tryFrom(State{OdometryBridge::bridge(x.path, odometry, s), x.shifts}, held);
 			out.bridgesTried++;
@@ -373,7 +389,7 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 			{
 				t.r.bridgesTried = out.bridgesTried, t.r.bridges = out.bridges + 1;
 				x = std::move(t.y), out = std::move(t.r), ties = std::move(t.ties), kept = true;
-				m = OdometryBridge::distances(x.path, odometry, params.bridge_window);
+				distances();
 				break;
 			}
 		}
@@ -382,7 +398,7 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 	for (const auto& set : sets)
 		for (const auto& f : set) (f.dof() < 2 ? out.duplicateWallsApart : out.duplicatesApart)++;
 	out.duplicatesApart -= out.duplicates, out.duplicateWallsApart -= out.duplicateWalls;
-	out.strayMax = OdometryBridge::worst(m);
+	out.strayMax = OdometryBridge::worst(m.front());
 	pb.same = std::move(held), pb.contacts = startTies;
 	out.costBefore = pb.cost(start);  // with the first round's ties and the pairs kept
 	return finish(std::move(x));

@@ -23,6 +23,7 @@ TSmoothParams TSmoothParams::load(const std::string& path)
 	p.table_sigma = sec.number("table_sigma", p.table_sigma, 0, 10);
 	p.bridge_gate = sec.number("bridge_gate", p.bridge_gate, 0, 1000);
 	p.bridge_window = static_cast<unsigned>(sec.integer("bridge_window", p.bridge_window, 1, 1000));
+	p.bridge_short_window = static_cast<unsigned>(sec.integer("bridge_short_window", p.bridge_short_window, 0, 1000));
 	p.stretch_margin = static_cast<unsigned>(sec.integer("stretch_margin", p.stretch_margin, 0, 1000));
 	p.rounds = static_cast<unsigned>(sec.integer("rounds", p.rounds, 1, 100));
 	p.iterations = static_cast<unsigned>(sec.integer("iterations", p.iterations, 1, 1000));
