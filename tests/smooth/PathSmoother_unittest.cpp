@@ -338,6 +338,14 @@ TEST(PathSmoother, AStretchLockedOntoTheWrongLegsIsBridged)
 	EXPECT_EQ(bridged.tied, in.contacts.size());
 	EXPECT_LT(Corridor::worst(bridged.path, truth), 0.002);
 	EXPECT_LT(bridged.strayMax, 1e-3);  // the truth is the odometry's chain here
+	// A long window the path cannot fill finds nothing; a short one beside it bridges as well.
+	p.bridge_window = 200;
+	EXPECT_EQ(PathSmoother::run(in, p).bridgesTried, 0u);
+	p.bridge_short_window = 40;
+	const auto shortBridged = PathSmoother::run(in, p);
+	EXPECT_GE(shortBridged.bridges, 1u);
+	EXPECT_LT(Corridor::worst(shortBridged.path, truth), 0.002);
+	p.bridge_window = 40, p.bridge_short_window = 0;
 	// From the truth nothing strays: nothing is tried, and the path stays.
 	in.path = truth;
 	const auto kept = PathSmoother::run(in, p);

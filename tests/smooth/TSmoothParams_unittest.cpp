@@ -32,7 +32,7 @@ TEST_F(TSmoothParamsTest, DefaultsWithoutTheSectionAndEveryKeyRead)
 		"[smooth]\nenabled = false\ngate = 0.1\nnormal_gate_deg = 30\nposition_floor = 0.003\nhuber = 1.5\n"
 		"solid_sigma = 2\nrounds = 3\niterations = 7\npasses = 2\nduplicate_sigma = 0.01\nduplicate_shrink = 0.2\n"
 		"duplicate_distance = 0.05\nduplicate_wall_distance = 0.2\ntable_sigma = 0.004\n"
-		"bridge_gate = 6\nbridge_window = 30\nbridge_short_window = 0\nstretch_margin = 0\n"));
+		"bridge_gate = 6\nbridge_window = 30\nbridge_short_window = 12\nstretch_margin = 0\n"));
 	EXPECT_FALSE(p.enabled);
 	EXPECT_DOUBLE_EQ(p.gate, 0.1);
 	EXPECT_NEAR(p.normal_gate, M_PI / 6, 1e-12);
@@ -52,8 +52,8 @@ TEST_F(TSmoothParamsTest, DefaultsWithoutTheSectionAndEveryKeyRead)
 	EXPECT_EQ(p.bridge_window, 30u);
 	EXPECT_DOUBLE_EQ(d.bridge_gate, 4);  // on unless turned off
 	EXPECT_EQ(d.bridge_window, 40u);
-	EXPECT_EQ(p.bridge_short_window, 0u);
-	EXPECT_EQ(d.bridge_short_window, 12u);  // on unless turned off
+	EXPECT_EQ(p.bridge_short_window, 12u);
+	EXPECT_EQ(d.bridge_short_window, 0u);  // off unless asked for
 	EXPECT_EQ(p.stretch_margin, 0u);
 	EXPECT_EQ(d.stretch_margin, 40u);  // on unless turned off
 }
@@ -115,7 +115,7 @@ TEST(TSmoothParams, HundredParticleConfigSmoothsAsTheShippedOneWithTheTablesShap
 	EXPECT_EQ(s.bridge_gate, t.bridge_gate);
 	EXPECT_EQ(s.bridge_window, t.bridge_window);
 	EXPECT_EQ(s.bridge_short_window, t.bridge_short_window);
-	EXPECT_EQ(s.bridge_short_window, 12u);
+	EXPECT_EQ(s.bridge_short_window, 0u);
 	EXPECT_EQ(s.stretch_margin, t.stretch_margin);
 	EXPECT_EQ(s.table_sigma, 0);
 	EXPECT_EQ(t.table_sigma, 0.005);

@@ -37,8 +37,9 @@ struct TSmoothParams
 	double bridge_gate = 4;
 	unsigned bridge_window = 40;  ///< sweeps: the window of eq. S8
 	/** Sweeps: a second, shorter window of eq. S8, whose strays are tried too (a bend that comes
-	 *  back within bridge_window sweeps shows only in a shorter one; 0: none). */
-	unsigned bridge_short_window = 12;
+	 *  back within bridge_window sweeps shows only in a shorter one; 0: none, the default:
+	 *  doc/slam.md, "A short window beside the long one"). */
+	unsigned bridge_short_window = 0;
 	/** Sweeps: a pair set (a table or a wall mapped twice) that eq. S6 leaves apart is tried
 	 *  again with the stretch of path that touched one copy moved onto the other, the move
 	 *  fading over this many sweeps at its ends (eq. S9, ShiftedStretch; 0: never). */
