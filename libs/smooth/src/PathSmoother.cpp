@@ -367,17 +367,17 @@ PathSmoother::TResult PathSmoother::run(const TInput& in, const TSmoothParams& p
 		m.clear();
 		for (const size_t w : windows) m.push_back(OdometryBridge::distances(x.path, odometry, w));
 	};
+	const auto strays = [&](size_t k) { return OdometryBridge::strays(m[k], windows[k], params.bridge_gate); };
 	const auto candidates = [&] {
 		std::vector<OdometryBridge::Stretch> found;
 		for (size_t k = 0; k < windows.size(); k++)
-			for (const auto& s : OdometryBridge::candidates(OdometryBridge::strays(m[k], windows[k], params.bridge_gate), windows[k], n))
+			for (const auto& s : OdometryBridge::candidates(strays(k), windows[k], n))
 				if (std::find(found.begin(), found.end(), s) == found.end()) found.push_back(s);
 		return found;
 	};
 	distances();
 	size_t most = 0;
-	for (size_t k = 0; k < windows.size() && params.bridge_gate > 0; k++)
-		most += OdometryBridge::strays(m[k], windows[k], params.bridge_gate).size();
+	for (size_t k = 0; k < windows.size() && params.bridge_gate > 0; k++) most += strays(k).size();
 	for (bool kept = most > 0; kept && out.bridges < most;)
 	{
 		kept = false;
